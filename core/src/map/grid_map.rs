@@ -1,0 +1,362 @@
+//! `GridMap`: the occupancy grid of `SetMap` (000 §3.2.2.1 (4), §5.2.4.1), its world frame,
+//! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (SPEC §2).
+
+use super::distance::euclidean_distance_squared;
+use crate::errors::MapError;
+use crate::rtc::Time;
+
+/// The largest map accepted: 16 Mi cells (a 4096 × 4096 map), so a bad header gives a clear
+/// error instead of an out-of-memory.
+pub const MAX_CELLS: usize = 16 * 1024 * 1024;
+
+/// A cell index `(x, y)`: x is the column (fastest in `MapData`), y the row, (0, 0) the
+/// lower-left cell.
+pub type Cell = (usize, usize);
+
+/// An occupancy grid. A `GridMap` that exists is valid (SPEC §2 Decision): dimensions ≥ 1,
+/// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
+/// 0 (free) or 1 (obstacle).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridMap {
+    width: usize,
+    height: usize,
+    grid_size: f64,
+    origin: (f64, f64),
+    /// 0 free, 1 obstacle; `x + y * width`.
+    cells: Vec<u8>,
+    /// Obstacle distance in metres, per cell (0 on obstacle cells).
+    distance: Vec<f64>,
+    version: Time,
+}
+
+impl GridMap {
+    /// A map from `cells` (x fastest, 0 free / 1 obstacle), with the lower-left corner of
+    /// cell (0, 0) at `origin` (metres).
+    pub fn new(
+        width: usize,
+        height: usize,
+        grid_size: f64,
+        origin: (f64, f64),
+        cells: Vec<u8>,
+    ) -> Result<Self, MapError> {
+        Self::check_shape(width as i64, height as i64)?;
+        if !(grid_size.is_finite() && grid_size > 0.0) {
+            return Err(MapError::BadGridSize { value: grid_size });
+        }
+        if !(origin.0.is_finite() && origin.1.is_finite()) {
+            return Err(MapError::BadOrigin {
+                x: origin.0,
+                y: origin.1,
+            });
+        }
+        if cells.len() != width * height {
+            return Err(MapError::DataLength {
+                len: cells.len(),
+                expected: width * height,
+            });
+        }
+        if let Some((index, &v)) = cells.iter().enumerate().find(|(_, v)| **v > 1) {
+            return Err(MapError::BadCellValue {
+                what: "MapData",
+                index,
+                value: i64::from(v),
+            });
+        }
+        let mut map = Self {
+            width,
+            height,
+            grid_size,
+            origin,
+            cells,
+            distance: Vec::new(),
+            version: Time::default(),
+        };
+        map.recompute_distance();
+        Ok(map)
+    }
+
+    /// `SetMap(MapData, MapLengthX, MapLengthY, GridSize)` (000 §3.2.2.1 (4)): origin (0, 0).
+    pub fn from_map_data(
+        map_data: &[i16],
+        map_length_x: i32,
+        map_length_y: i32,
+        grid_size: f64,
+    ) -> Result<Self, MapError> {
+        Self::check_shape(i64::from(map_length_x), i64::from(map_length_y))?;
+        let (w, h) = (map_length_x as usize, map_length_y as usize);
+        if map_data.len() != w * h {
+            return Err(MapError::DataLength {
+                len: map_data.len(),
+                expected: w * h,
+            });
+        }
+        let mut cells = Vec::with_capacity(map_data.len());
+        for (index, &v) in map_data.iter().enumerate() {
+            match v {
+                0 | 1 => cells.push(v as u8),
+                _ => {
+                    return Err(MapError::BadCellValue {
+                        what: "MapData",
+                        index,
+                        value: i64::from(v),
+                    });
+                }
+            }
+        }
+        Self::new(w, h, grid_size, (0.0, 0.0), cells)
+    }
+
+    fn check_shape(width: i64, height: i64) -> Result<(), MapError> {
+        if width < 1 {
+            return Err(MapError::BadDimension {
+                axis: "MapLengthX",
+                value: width,
+            });
+        }
+        if height < 1 {
+            return Err(MapError::BadDimension {
+                axis: "MapLengthY",
+                value: height,
+            });
+        }
+        let cells = (width as u64).saturating_mul(height as u64);
+        if cells > MAX_CELLS as u64 {
+            return Err(MapError::TooLarge {
+                width: width as usize,
+                height: height as usize,
+                cells,
+                limit: MAX_CELLS,
+            });
+        }
+        Ok(())
+    }
+
+    /// Cells in x (`MapLengthX`).
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Cells in y (`MapLengthY`).
+    pub fn height(&self) -> usize {
+        self.height
+    }
+
+    /// Cell edge length in metres (`GridSize`).
+    pub fn grid_size(&self) -> f64 {
+        self.grid_size
+    }
+
+    /// World position of the lower-left corner of cell (0, 0), metres.
+    pub fn origin(&self) -> (f64, f64) {
+        self.origin
+    }
+
+    /// The timestamp of the last `MapUpdate` (zero for a new map): the map's version.
+    pub fn version(&self) -> Time {
+        self.version
+    }
+
+    /// The cells, x fastest, 0 free / 1 obstacle.
+    pub fn cells(&self) -> &[u8] {
+        &self.cells
+    }
+
+    /// Obstacle distances in metres, x fastest (SPEC §2).
+    pub fn distances(&self) -> &[f64] {
+        &self.distance
+    }
+
+    /// Flat index of an in-map cell.
+    pub fn index(&self, (x, y): Cell) -> usize {
+        x + y * self.width
+    }
+
+    /// Whether `(x, y)` (possibly negative) lies inside the map.
+    pub fn contains(&self, x: i64, y: i64) -> bool {
+        x >= 0 && y >= 0 && (x as u64) < self.width as u64 && (y as u64) < self.height as u64
+    }
+
+    /// Whether `(x, y)` is an obstacle; outside the map counts as obstacle (SPEC §2).
+    pub fn is_obstacle(&self, x: i64, y: i64) -> bool {
+        !self.contains(x, y) || self.cells[x as usize + y as usize * self.width] == 1
+    }
+
+    /// Obstacle distance of an in-map cell, metres (0 on an obstacle cell).
+    pub fn obstacle_distance(&self, cell: Cell) -> f64 {
+        self.distance[self.index(cell)]
+    }
+
+    /// The cell containing world point `(wx, wy)` as signed indices (may be outside the map;
+    /// `None` only for non-finite input).
+    pub fn world_to_cell_signed(&self, wx: f64, wy: f64) -> Option<(i64, i64)> {
+        if !(wx.is_finite() && wy.is_finite()) {
+            return None;
+        }
+        let fx = libm::floor((wx - self.origin.0) / self.grid_size);
+        let fy = libm::floor((wy - self.origin.1) / self.grid_size);
+        if fx.abs() > 1e15 || fy.abs() > 1e15 {
+            return None;
+        }
+        Some((fx as i64, fy as i64))
+    }
+
+    /// The in-map cell containing world point `(wx, wy)`, if any (SPEC §2 "World ↔ grid").
+    pub fn world_to_cell(&self, wx: f64, wy: f64) -> Option<Cell> {
+        let (x, y) = self.world_to_cell_signed(wx, wy)?;
+        self.contains(x, y).then_some((x as usize, y as usize))
+    }
+
+    /// World position of the centre of cell `(x, y)`: `ox + (x + ½)·g`.
+    pub fn cell_center(&self, (x, y): Cell) -> (f64, f64) {
+        (
+            self.origin.0 + (x as f64 + 0.5) * self.grid_size,
+            self.origin.1 + (y as f64 + 0.5) * self.grid_size,
+        )
+    }
+
+    /// Whether a cell and every cell whose centre lies within `dmin` of it are passable
+    /// (000 §5.2.4.2, §5.2.4.4): equivalently its obstacle distance exceeds `dmin`.
+    pub fn is_clear(&self, cell: Cell, dmin: f64) -> bool {
+        self.obstacle_distance(cell) > dmin
+    }
+
+    /// `MapUpdate(X, Y, value, num, sec, nsec)` (000 §3.2.2.1 (5), SPEC §2 Decision): all
+    /// or nothing. Returns the number of cells whose value changed.
+    pub fn map_update(
+        &mut self,
+        x: &[i32],
+        y: &[i32],
+        value: &[i16],
+        num: i32,
+        tm: Time,
+    ) -> Result<usize, MapError> {
+        for (array, len) in [("X", x.len()), ("Y", y.len()), ("value", value.len())] {
+            if num < 0 || len != num as usize {
+                return Err(MapError::UpdateLength {
+                    array,
+                    len,
+                    num: i64::from(num),
+                });
+            }
+        }
+        for i in 0..x.len() {
+            let (cx, cy) = (i64::from(x[i]), i64::from(y[i]));
+            if !self.contains(cx, cy) {
+                return Err(MapError::CellOutside {
+                    what: "MapUpdate",
+                    x: cx,
+                    y: cy,
+                    width: self.width,
+                    height: self.height,
+                });
+            }
+            if !(0..=1).contains(&value[i]) {
+                return Err(MapError::BadCellValue {
+                    what: "value",
+                    index: i,
+                    value: i64::from(value[i]),
+                });
+            }
+        }
+        let mut changed = 0;
+        for i in 0..x.len() {
+            let idx = x[i] as usize + y[i] as usize * self.width;
+            let v = value[i] as u8;
+            if self.cells[idx] != v {
+                self.cells[idx] = v;
+                changed += 1;
+            }
+        }
+        self.version = tm;
+        if changed > 0 {
+            self.recompute_distance();
+        }
+        Ok(changed)
+    }
+
+    fn recompute_distance(&mut self) {
+        let obstacle: Vec<bool> = self.cells.iter().map(|&c| c == 1).collect();
+        let g = self.grid_size;
+        self.distance = euclidean_distance_squared(&obstacle, self.width, self.height)
+            .into_iter()
+            .map(|d2| libm::sqrt(d2) * g)
+            .collect();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn set_map_is_x_fastest_as_the_3x3_example() {
+        // 000 §3.2.2.1 (4): MapData[1] is X[1]Y[0], MapData[3] is X[0]Y[1].
+        let m = GridMap::from_map_data(&[0, 1, 0, 1, 0, 0, 0, 0, 0], 3, 3, 0.5).unwrap();
+        assert!(m.is_obstacle(1, 0));
+        assert!(m.is_obstacle(0, 1));
+        assert!(!m.is_obstacle(1, 1));
+        assert!(m.is_obstacle(-1, 1) && m.is_obstacle(3, 0));
+        assert_eq!(m.world_to_cell(0.75, 0.25), Some((1, 0)));
+        assert_eq!(m.cell_center((1, 0)), (0.75, 0.25));
+        assert_eq!(m.obstacle_distance((1, 1)), 0.5);
+        assert_eq!(m.obstacle_distance((2, 2)), 0.5);
+    }
+
+    #[test]
+    fn bad_input_is_refused_and_the_map_unchanged() {
+        assert!(matches!(
+            GridMap::from_map_data(&[0; 8], 3, 3, 1.0),
+            Err(MapError::DataLength {
+                len: 8,
+                expected: 9
+            })
+        ));
+        assert!(matches!(
+            GridMap::from_map_data(&[0, 2, 0, 0], 2, 2, 1.0),
+            Err(MapError::BadCellValue {
+                index: 1,
+                value: 2,
+                ..
+            })
+        ));
+        assert!(matches!(
+            GridMap::from_map_data(&[0; 4], 2, 2, 0.0),
+            Err(MapError::BadGridSize { .. })
+        ));
+        assert!(matches!(
+            GridMap::from_map_data(&[0; 4], 2, 2, f64::NAN),
+            Err(MapError::BadGridSize { .. })
+        ));
+        assert!(matches!(
+            GridMap::from_map_data(&[], 0, 2, 1.0),
+            Err(MapError::BadDimension {
+                axis: "MapLengthX",
+                ..
+            })
+        ));
+        assert!(matches!(
+            GridMap::new(5000, 5000, 1.0, (0.0, 0.0), vec![]),
+            Err(MapError::TooLarge { .. })
+        ));
+        let mut m = GridMap::from_map_data(&[0; 4], 2, 2, 1.0).unwrap();
+        let before = m.clone();
+        let tm = Time { sec: 3, nsec: 4 };
+        assert!(matches!(
+            m.map_update(&[0, 1], &[0], &[1, 1], 2, tm),
+            Err(MapError::UpdateLength { array: "Y", .. })
+        ));
+        assert!(matches!(
+            m.map_update(&[0, 2], &[0, 0], &[1, 1], 2, tm),
+            Err(MapError::CellOutside { x: 2, .. })
+        ));
+        assert!(matches!(
+            m.map_update(&[0, 1], &[0, 0], &[1, 2], 2, tm),
+            Err(MapError::BadCellValue { what: "value", .. })
+        ));
+        assert_eq!(m, before);
+        assert_eq!(m.map_update(&[0, 1], &[0, 0], &[1, 1], 2, tm), Ok(2));
+        assert_eq!(m.version(), tm);
+        assert!(m.is_obstacle(1, 0));
+        assert_eq!(m.obstacle_distance((0, 1)), 1.0);
+    }
+}

@@ -1,0 +1,139 @@
+//! The `Component` trait: the callbacks of seed 003's table, each with a default.
+
+use core::any::Any;
+use core::fmt;
+
+use super::config::ConfigAccess;
+use super::idl::Time;
+
+/// Why a callback failed; the GUI shows `reason` (SPEC §1: "A callback fails by returning an
+/// error value (with a reason that the GUI shows)").
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ComponentError {
+    /// Human-readable reason.
+    pub reason: String,
+}
+
+impl ComponentError {
+    /// A failure with this reason.
+    pub fn new(reason: impl Into<String>) -> Self {
+        Self {
+            reason: reason.into(),
+        }
+    }
+}
+
+impl fmt::Display for ComponentError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.reason)
+    }
+}
+
+impl std::error::Error for ComponentError {}
+
+impl From<crate::Error> for ComponentError {
+    fn from(e: crate::Error) -> Self {
+        Self::new(e.to_string())
+    }
+}
+
+/// What every callback returns: OpenRTM's `ReturnCode_t` as a `Result`.
+pub type ReturnCode = Result<(), ComponentError>;
+
+/// What the execution context tells a callback about the moment it runs.
+///
+/// Time is simulated: integer nanoseconds since the context was created, advanced only by
+/// ticks (SPEC §6). No component reads a clock.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Tick {
+    /// Simulated time of this tick in nanoseconds.
+    pub time_ns: u64,
+    /// This component's period in nanoseconds (1 / its rate).
+    pub period_ns: u64,
+    /// The context's base tick counter (0 for the first tick).
+    pub index: u64,
+}
+
+impl Tick {
+    /// Simulated time in seconds.
+    pub fn seconds(&self) -> f64 {
+        self.time_ns as f64 * 1e-9
+    }
+
+    /// The period in seconds.
+    pub fn period(&self) -> f64 {
+        self.period_ns as f64 * 1e-9
+    }
+
+    /// The timestamp of this tick, as the IDL's `RTC::Time`.
+    pub fn tm(&self) -> Time {
+        Time::from_nanos(self.time_ns)
+    }
+}
+
+/// An RT-component: the actions of seed 003's table ("アクションのまとめ").
+///
+/// Every callback has a default that succeeds and does nothing, so a component overrides
+/// only what it needs — as an OpenRTM component overrides only its `on???` functions.
+/// A callback fails by returning [`ComponentError`]; what happens then is the execution
+/// context's business ([`super::ExecutionContext`], SPEC §1's table).
+pub trait Component: Any {
+    /// The instance name (e.g. `LocalPathPlanning0`).
+    fn instance_name(&self) -> &str;
+
+    /// This component's configuration, if it has parameters (SPEC §1 "Configuration
+    /// parameters"). The context applies `on_activation` parameters just before
+    /// [`Component::on_activated`].
+    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
+        None
+    }
+
+    /// Once, when the component is created.
+    fn on_initialize(&mut self) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, when the component is finalized.
+    fn on_finalize(&mut self) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, when the execution context starts running.
+    fn on_startup(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, when the execution context stops.
+    fn on_shutdown(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, on Inactive → Active.
+    fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, on Active → Inactive.
+    fn on_deactivated(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Every period while Active.
+    fn on_execute(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Every period while Active, right after `on_execute`.
+    fn on_state_update(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, before entering Error.
+    fn on_aborting(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Every period while in Error.
+    fn on_error(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// Once, when reset from Error; success leads to Inactive, failure stays in Error.
+    fn on_reset(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+    /// When the component's rate changes.
+    fn on_rate_changed(&mut self, _tick: &Tick) -> ReturnCode {
+        Ok(())
+    }
+}

@@ -1,0 +1,461 @@
+//! Configuration parameters (SPEC §1 "Configuration parameters", 000 §4, 002 §4).
+//!
+//! A component declares its parameters once with [`define_parameters!`]: a plain struct the
+//! component reads with ordinary field access, plus a table of [`ParamSpec`] (the seed's name,
+//! unit, default, range and reflection timing). [`Configuration`] holds two copies:
+//! - *requested*: what the user set (RT System Editor's ConfigurationView, a `.conf` file);
+//! - *effective*: what the component reads. An `always` parameter is copied at once; an
+//!   `on_activation` one when the component is activated (002 §5.2.3 (2)), so until then it
+//!   shows as *pending*.
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use serde::{Deserialize, Serialize};
+
+use super::conf_file::{ConfFile, ConfKey};
+use crate::errors::ConfigError;
+
+/// When a changed value reaches the component (000/002 §4.2 "反映タイミング").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub enum Reflection {
+    /// 常時: at the next tick.
+    Always,
+    /// 初期化時: copied in `on_activated`, locked until the next activation.
+    OnActivation,
+}
+
+impl fmt::Display for Reflection {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::Always => "always",
+            Self::OnActivation => "on_activation",
+        })
+    }
+}
+
+/// A parameter's type as the seed's table gives it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub enum ParamKind {
+    /// `double`.
+    Double,
+    /// `int` (stored as a whole number).
+    Int,
+}
+
+impl ParamKind {
+    /// The seed's type name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Double => "double",
+            Self::Int => "int",
+        }
+    }
+}
+
+/// One parameter's declaration.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ParamSpec {
+    /// The seed's name, e.g. `RouteRemakeDistance`.
+    pub name: &'static str,
+    /// Its type.
+    pub kind: ParamKind,
+    /// Unit, e.g. `m`, `%`, `rad`, or `-`.
+    pub unit: &'static str,
+    /// Default value.
+    pub default: f64,
+    /// Smallest allowed value (inclusive); `-inf` for none.
+    pub min: f64,
+    /// Largest allowed value (inclusive); `+inf` for none.
+    pub max: f64,
+    /// When a change takes effect.
+    pub reflection: Reflection,
+    /// What it means (the seed's 説明).
+    pub description: &'static str,
+}
+
+impl ParamSpec {
+    /// The range as text, e.g. `[0, 100]` or `[0, ∞)`.
+    pub fn range_text(&self) -> String {
+        let lo = if self.min.is_finite() {
+            format!("[{}", self.min)
+        } else {
+            "(-∞".to_owned()
+        };
+        let hi = if self.max.is_finite() {
+            format!("{}]", self.max)
+        } else {
+            "∞)".to_owned()
+        };
+        format!("{lo}, {hi}")
+    }
+
+    /// Checks `value` against type and range.
+    pub fn check(&self, value: f64, line: Option<usize>) -> Result<f64, ConfigError> {
+        if self.kind == ParamKind::Int && value.is_finite() && value.fract() != 0.0 {
+            return Err(ConfigError::BadValue {
+                name: self.name.to_owned(),
+                value: value.to_string(),
+                kind: self.kind.name(),
+                line,
+            });
+        }
+        if value.is_nan() || value < self.min || value > self.max {
+            return Err(ConfigError::OutOfRange {
+                name: self.name.to_owned(),
+                value: value.to_string(),
+                range: self.range_text(),
+                line,
+            });
+        }
+        Ok(value)
+    }
+
+    /// Parses `text` as this parameter's type and checks its range.
+    pub fn parse(&self, text: &str, line: Option<usize>) -> Result<f64, ConfigError> {
+        let t = text.trim();
+        let bad = || ConfigError::BadValue {
+            name: self.name.to_owned(),
+            value: t.to_owned(),
+            kind: self.kind.name(),
+            line,
+        };
+        let v = match self.kind {
+            ParamKind::Double => t.parse::<f64>().map_err(|_| bad())?,
+            ParamKind::Int => t.parse::<i64>().map_err(|_| bad())? as f64,
+        };
+        self.check(v, line)
+    }
+
+    /// Formats a value as a `.conf` file writes it.
+    pub fn format(&self, value: f64) -> String {
+        match self.kind {
+            ParamKind::Int => format!("{}", value as i64),
+            ParamKind::Double if value.fract() == 0.0 && value.abs() < 1e15 => {
+                format!("{value:.1}")
+            }
+            ParamKind::Double => format!("{value}"),
+        }
+    }
+}
+
+/// A field type usable in [`define_parameters!`].
+pub trait ParamType: Copy {
+    /// The kind recorded in the spec.
+    const KIND: ParamKind;
+    /// To the common representation.
+    fn to_f64(self) -> f64;
+    /// From the common representation (already checked by [`ParamSpec::check`]).
+    fn from_f64(v: f64) -> Self;
+}
+
+impl ParamType for f64 {
+    const KIND: ParamKind = ParamKind::Double;
+    fn to_f64(self) -> f64 {
+        self
+    }
+    fn from_f64(v: f64) -> Self {
+        v
+    }
+}
+
+impl ParamType for i32 {
+    const KIND: ParamKind = ParamKind::Int;
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    fn from_f64(v: f64) -> Self {
+        v as i32
+    }
+}
+
+/// A component's parameter struct; implemented by [`define_parameters!`].
+pub trait ParameterSet: Clone + PartialEq + fmt::Debug + 'static {
+    /// The declarations, in the seed's table order.
+    const SPECS: &'static [ParamSpec];
+    /// The value of parameter `index` (an index into `SPECS`).
+    fn get(&self, index: usize) -> f64;
+    /// Sets parameter `index` (already checked).
+    fn put(&mut self, index: usize, value: f64);
+    /// Every parameter at its default.
+    fn defaults() -> Self;
+}
+
+/// Declares a parameter struct and its [`ParameterSet`] table.
+///
+/// ```
+/// rtnav::define_parameters! {
+///     /// Example.
+///     pub struct ExampleParams {
+///         /// Gain.
+///         p_gain: f64 = ("PGain", "-", 5.0, 0.0, f64::INFINITY, Always, "P gain"),
+///         /// Wheel id.
+///         wheel_id: i32 = ("wheelID", "-", 0.0, 0.0, 16.0, OnActivation, "wheel id"),
+///     }
+/// }
+/// let p = <ExampleParams as rtnav::rtc::ParameterSet>::defaults();
+/// assert_eq!(p.p_gain, 5.0);
+/// ```
+#[macro_export]
+macro_rules! define_parameters {
+    (
+        $(#[$meta:meta])*
+        pub struct $name:ident {
+            $(
+                $(#[$fmeta:meta])*
+                $field:ident : $ty:ty = ($pname:expr, $unit:expr, $default:expr, $min:expr, $max:expr, $refl:ident, $desc:expr)
+            ),* $(,)?
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+        pub struct $name {
+            $( $(#[$fmeta])* pub $field: $ty, )*
+        }
+
+        impl $crate::rtc::ParameterSet for $name {
+            const SPECS: &'static [$crate::rtc::ParamSpec] = &[
+                $( $crate::rtc::ParamSpec {
+                    name: $pname,
+                    kind: <$ty as $crate::rtc::ParamType>::KIND,
+                    unit: $unit,
+                    default: $default,
+                    min: $min,
+                    max: $max,
+                    reflection: $crate::rtc::Reflection::$refl,
+                    description: $desc,
+                }, )*
+            ];
+            #[allow(unused_assignments)]
+            fn get(&self, index: usize) -> f64 {
+                let mut i = 0usize;
+                $( if index == i { return <$ty as $crate::rtc::ParamType>::to_f64(self.$field); } i += 1; )*
+                f64::NAN
+            }
+            #[allow(unused_assignments)]
+            fn put(&mut self, index: usize, value: f64) {
+                let mut i = 0usize;
+                $( if index == i { self.$field = <$ty as $crate::rtc::ParamType>::from_f64(value); return; } i += 1; )*
+            }
+            fn defaults() -> Self {
+                Self { $( $field: <$ty as $crate::rtc::ParamType>::from_f64($default), )* }
+            }
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                <Self as $crate::rtc::ParameterSet>::defaults()
+            }
+        }
+    };
+}
+
+/// The name of the configuration set every component has.
+pub const DEFAULT_SET: &str = "default";
+
+/// A component's configuration: requested and effective values, and named sets.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Configuration<P: ParameterSet> {
+    requested: P,
+    effective: P,
+    /// Named configuration sets: values given for some parameters (by spec index).
+    sets: BTreeMap<String, BTreeMap<usize, f64>>,
+    active_set: String,
+    /// `conf.__widget__.NAME` entries as read, kept for the GUI.
+    widgets: BTreeMap<usize, String>,
+}
+
+impl<P: ParameterSet> Default for Configuration<P> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<P: ParameterSet> Configuration<P> {
+    /// Every parameter at its default, in the set `default`.
+    pub fn new() -> Self {
+        let mut sets = BTreeMap::new();
+        sets.insert(DEFAULT_SET.to_owned(), BTreeMap::new());
+        Self {
+            requested: P::defaults(),
+            effective: P::defaults(),
+            sets,
+            active_set: DEFAULT_SET.to_owned(),
+            widgets: BTreeMap::new(),
+        }
+    }
+
+    /// What the component reads.
+    pub fn params(&self) -> &P {
+        &self.effective
+    }
+
+    /// What the user set (equals [`Configuration::params`] except for pending
+    /// `on_activation` parameters).
+    pub fn requested(&self) -> &P {
+        &self.requested
+    }
+
+    fn index(name: &str, line: Option<usize>) -> Result<usize, ConfigError> {
+        P::SPECS
+            .iter()
+            .position(|s| s.name == name)
+            .ok_or_else(|| ConfigError::UnknownParameter {
+                name: name.to_owned(),
+                line,
+            })
+    }
+
+    fn set_index(&mut self, i: usize, value: f64) {
+        self.requested.put(i, value);
+        if P::SPECS[i].reflection == Reflection::Always {
+            self.effective.put(i, value);
+        }
+        if let Some(set) = self.sets.get_mut(&self.active_set) {
+            set.insert(i, value);
+        }
+    }
+}
+
+/// Object-safe access to any component's configuration, for the execution context, the GUI
+/// and `.conf` files.
+pub trait ConfigAccess {
+    /// The parameter declarations.
+    fn specs(&self) -> &'static [ParamSpec];
+    /// The requested value of `name`.
+    fn value(&self, name: &str) -> Result<f64, ConfigError>;
+    /// The value the component is using now.
+    fn effective_value(&self, name: &str) -> Result<f64, ConfigError>;
+    /// Whether `name` has a requested value that waits for the next activation.
+    fn is_pending(&self, name: &str) -> Result<bool, ConfigError>;
+    /// Sets `name`; an out-of-range value is refused and the old value stays.
+    fn set(&mut self, name: &str, value: f64) -> Result<(), ConfigError>;
+    /// Parses and sets `name` from text.
+    fn set_text(&mut self, name: &str, text: &str) -> Result<(), ConfigError>;
+    /// Copies every requested value to the effective values (the context calls this just
+    /// before `on_activated`).
+    fn apply_on_activation(&mut self);
+    /// The names of the configuration sets.
+    fn set_names(&self) -> Vec<String>;
+    /// The active configuration set.
+    fn active_set(&self) -> &str;
+    /// Makes `name` the active set and applies its values (atomically).
+    fn activate_set(&mut self, name: &str) -> Result<(), ConfigError>;
+    /// Applies a parsed `.conf` file: every set it names is created or updated, the active
+    /// set's values applied. Atomic: on any error nothing changes.
+    fn load_conf(&mut self, conf: &ConfFile) -> Result<(), ConfigError>;
+    /// Writes every set as an OpenRTM `.conf` file.
+    fn to_conf(&self) -> String;
+}
+
+impl<P: ParameterSet> ConfigAccess for Configuration<P> {
+    fn specs(&self) -> &'static [ParamSpec] {
+        P::SPECS
+    }
+
+    fn value(&self, name: &str) -> Result<f64, ConfigError> {
+        Ok(self.requested.get(Self::index(name, None)?))
+    }
+
+    fn effective_value(&self, name: &str) -> Result<f64, ConfigError> {
+        Ok(self.effective.get(Self::index(name, None)?))
+    }
+
+    fn is_pending(&self, name: &str) -> Result<bool, ConfigError> {
+        let i = Self::index(name, None)?;
+        Ok(self.requested.get(i).to_bits() != self.effective.get(i).to_bits())
+    }
+
+    fn set(&mut self, name: &str, value: f64) -> Result<(), ConfigError> {
+        let i = Self::index(name, None)?;
+        let v = P::SPECS[i].check(value, None)?;
+        self.set_index(i, v);
+        Ok(())
+    }
+
+    fn set_text(&mut self, name: &str, text: &str) -> Result<(), ConfigError> {
+        let i = Self::index(name, None)?;
+        let v = P::SPECS[i].parse(text, None)?;
+        self.set_index(i, v);
+        Ok(())
+    }
+
+    fn apply_on_activation(&mut self) {
+        self.effective = self.requested.clone();
+    }
+
+    fn set_names(&self) -> Vec<String> {
+        self.sets.keys().cloned().collect()
+    }
+
+    fn active_set(&self) -> &str {
+        &self.active_set
+    }
+
+    fn activate_set(&mut self, name: &str) -> Result<(), ConfigError> {
+        let values = self
+            .sets
+            .get(name)
+            .cloned()
+            .ok_or_else(|| ConfigError::UnknownSet {
+                name: name.to_owned(),
+            })?;
+        self.active_set = name.to_owned();
+        for (i, v) in values {
+            self.set_index(i, v);
+        }
+        Ok(())
+    }
+
+    fn load_conf(&mut self, conf: &ConfFile) -> Result<(), ConfigError> {
+        let mut next = self.clone();
+        let mut active = None;
+        for e in &conf.entries {
+            match &e.key {
+                ConfKey::Param { set, name } => {
+                    let i = Self::index(name, Some(e.line))?;
+                    let v = P::SPECS[i].parse(&e.value, Some(e.line))?;
+                    next.sets.entry(set.clone()).or_default().insert(i, v);
+                }
+                ConfKey::Widget { name } | ConfKey::Meta { name, .. } => {
+                    let i = Self::index(name, Some(e.line))?;
+                    if matches!(e.key, ConfKey::Widget { .. }) {
+                        next.widgets.insert(i, e.value.clone());
+                    }
+                }
+                ConfKey::ActiveSet => active = Some(e.value.trim().to_owned()),
+                ConfKey::ExecutionRate => {}
+            }
+        }
+        let set = active.unwrap_or_else(|| next.active_set.clone());
+        next.activate_set(&set)?;
+        *self = next;
+        Ok(())
+    }
+
+    fn to_conf(&self) -> String {
+        let mut out =
+            String::from("# -*- Property -*-\n# Written by rtnav (OpenRTM .conf syntax).\n");
+        out += &format!("configuration.active_config: {}\n", self.active_set);
+        for (set, values) in &self.sets {
+            out.push('\n');
+            for (i, spec) in P::SPECS.iter().enumerate() {
+                let v = if set == &self.active_set {
+                    Some(self.requested.get(i))
+                } else {
+                    values.get(&i).copied()
+                };
+                if let Some(v) = v {
+                    out += &format!("conf.{set}.{}: {}\n", spec.name, spec.format(v));
+                }
+            }
+        }
+        if !self.widgets.is_empty() {
+            out.push('\n');
+            for (i, w) in &self.widgets {
+                out += &format!("conf.__widget__.{}: {w}\n", P::SPECS[*i].name);
+            }
+        }
+        out
+    }
+}

@@ -1,0 +1,501 @@
+//! The execution context: simulated-time ticks drive components through the lifecycle of
+//! SPEC §1's table (seed 003 "実行コンテキスト", "RTCの状態遷移").
+//!
+//! Time is an integer count of nanoseconds, advanced only by [`ExecutionContext::tick`]: no
+//! clock is read (SPEC §6). The context has a *base rate* (e.g. 1 kHz); each component runs at
+//! its own rate, whose period must be a whole number of base ticks.
+//!
+//! **Order (documented invariant)**: on base tick `k` (time `k · base_period`), every
+//! component whose period (in base ticks) divides `k` runs, in the order the components were
+//! attached. So with one component at 1 kHz attached first and one at 10 Hz second, base tick
+//! 0 runs both (1 kHz first), ticks 1..99 run only the first, tick 100 both again: exactly 100
+//! ticks of the first per tick of the second.
+//!
+//! Requests from outside (activate, deactivate, reset, …) are carried out at once, between
+//! ticks, at the current simulated time. An illegal request returns
+//! [`LifecycleError::InvalidTransition`] and changes nothing.
+
+use core::any::Any;
+
+use super::component::{Component, ComponentError, ReturnCode, Tick};
+use super::state::{ContextState, LifecycleState, Request};
+use crate::errors::LifecycleError;
+
+const NANOS_PER_SEC: f64 = 1e9;
+
+/// Identifies a component attached to an [`ExecutionContext`] (its attachment index).
+pub type ComponentId = usize;
+
+/// What happened to a component: a state change or a failed callback (for event logs).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LifecycleEvent {
+    /// Simulated time in nanoseconds.
+    pub time_ns: u64,
+    /// The component.
+    pub id: ComponentId,
+    /// Its instance name.
+    pub component: String,
+    /// State before.
+    pub from: LifecycleState,
+    /// State after.
+    pub to: LifecycleState,
+    /// The callback whose run caused this event.
+    pub callback: &'static str,
+    /// The callback's failure reason, if it failed.
+    pub reason: Option<String>,
+}
+
+struct Slot {
+    component: Box<dyn Component>,
+    state: LifecycleState,
+    period_ticks: u64,
+    fault: Option<String>,
+    last_error: Option<String>,
+}
+
+/// A periodic execution context in simulated time.
+pub struct ExecutionContext {
+    base_period_ns: u64,
+    state: ContextState,
+    next_tick: u64,
+    slots: Vec<Slot>,
+    events: Vec<LifecycleEvent>,
+}
+
+impl core::fmt::Debug for ExecutionContext {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("ExecutionContext")
+            .field("base_period_ns", &self.base_period_ns)
+            .field("state", &self.state)
+            .field("next_tick", &self.next_tick)
+            .field(
+                "components",
+                &self
+                    .slots
+                    .iter()
+                    .map(|s| (s.component.instance_name().to_owned(), s.state))
+                    .collect::<Vec<_>>(),
+            )
+            .finish()
+    }
+}
+
+/// The period in nanoseconds of `rate_hz`, if it is a whole number of nanoseconds.
+fn period_ns(rate_hz: f64) -> Result<u64, LifecycleError> {
+    let bad = |reason: &str| LifecycleError::InvalidRate {
+        rate: rate_hz,
+        reason: reason.to_owned(),
+    };
+    if !(rate_hz.is_finite() && rate_hz > 0.0) {
+        return Err(bad("it must be positive and finite"));
+    }
+    let p = NANOS_PER_SEC / rate_hz;
+    if p.fract() != 0.0 || p < 1.0 || p * rate_hz != NANOS_PER_SEC {
+        return Err(bad("its period is not a whole number of nanoseconds"));
+    }
+    Ok(p as u64)
+}
+
+impl ExecutionContext {
+    /// A Stopped context whose base tick runs at `base_rate_hz` (e.g. 1000.0).
+    pub fn new(base_rate_hz: f64) -> Result<Self, LifecycleError> {
+        Ok(Self {
+            base_period_ns: period_ns(base_rate_hz)?,
+            state: ContextState::Stopped,
+            next_tick: 0,
+            slots: Vec::new(),
+            events: Vec::new(),
+        })
+    }
+
+    /// The base period in nanoseconds.
+    pub fn base_period_ns(&self) -> u64 {
+        self.base_period_ns
+    }
+
+    /// Current simulated time in nanoseconds: the time of the next tick.
+    pub fn time_ns(&self) -> u64 {
+        self.next_tick * self.base_period_ns
+    }
+
+    /// Number of base ticks run so far.
+    pub fn tick_count(&self) -> u64 {
+        self.next_tick
+    }
+
+    /// Running or Stopped.
+    pub fn context_state(&self) -> ContextState {
+        self.state
+    }
+
+    fn period_ticks(&self, rate_hz: f64) -> Result<u64, LifecycleError> {
+        let p = period_ns(rate_hz)?;
+        if p % self.base_period_ns != 0 {
+            return Err(LifecycleError::InvalidRate {
+                rate: rate_hz,
+                reason: format!(
+                    "its period of {p} ns is not a whole number of base ticks ({} ns)",
+                    self.base_period_ns
+                ),
+            });
+        }
+        Ok(p / self.base_period_ns)
+    }
+
+    /// Creates a component in this context: runs `on_initialize` (Created → Inactive; it stays
+    /// Created if that fails, and the failure is in the events). Returns its id.
+    pub fn attach(
+        &mut self,
+        component: Box<dyn Component>,
+        rate_hz: f64,
+    ) -> Result<ComponentId, LifecycleError> {
+        let period_ticks = self.period_ticks(rate_hz)?;
+        let id = self.slots.len();
+        self.slots.push(Slot {
+            component,
+            state: LifecycleState::Created,
+            period_ticks,
+            fault: None,
+            last_error: None,
+        });
+        self.initialize(id)?;
+        Ok(id)
+    }
+
+    /// Number of attached components.
+    pub fn len(&self) -> usize {
+        self.slots.len()
+    }
+
+    /// Whether no component is attached.
+    pub fn is_empty(&self) -> bool {
+        self.slots.is_empty()
+    }
+
+    fn slot(&self, id: ComponentId) -> Result<&Slot, LifecycleError> {
+        self.slots
+            .get(id)
+            .ok_or(LifecycleError::UnknownComponent { id })
+    }
+
+    /// A component's lifecycle state.
+    pub fn state(&self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
+        Ok(self.slot(id)?.state)
+    }
+
+    /// A component's instance name.
+    pub fn name(&self, id: ComponentId) -> Result<&str, LifecycleError> {
+        Ok(self.slot(id)?.component.instance_name())
+    }
+
+    /// The reason of the component's most recent callback failure, kept until it is reset.
+    pub fn last_error(&self, id: ComponentId) -> Result<Option<&str>, LifecycleError> {
+        Ok(self.slot(id)?.last_error.as_deref())
+    }
+
+    /// A component's rate in Hz.
+    pub fn rate(&self, id: ComponentId) -> Result<f64, LifecycleError> {
+        let s = self.slot(id)?;
+        Ok(NANOS_PER_SEC / (s.period_ticks * self.base_period_ns) as f64)
+    }
+
+    /// The component, as its concrete type.
+    pub fn component<T: Component>(&self, id: ComponentId) -> Option<&T> {
+        let c: &dyn Any = self.slots.get(id)?.component.as_ref();
+        c.downcast_ref::<T>()
+    }
+
+    /// The component, as its concrete type, mutably (for service calls).
+    pub fn component_mut<T: Component>(&mut self, id: ComponentId) -> Option<&mut T> {
+        let c: &mut dyn Any = self.slots.get_mut(id)?.component.as_mut();
+        c.downcast_mut::<T>()
+    }
+
+    /// The component as a trait object (e.g. for its configuration).
+    pub fn component_dyn_mut(
+        &mut self,
+        id: ComponentId,
+    ) -> Result<&mut dyn Component, LifecycleError> {
+        Ok(self
+            .slots
+            .get_mut(id)
+            .ok_or(LifecycleError::UnknownComponent { id })?
+            .component
+            .as_mut())
+    }
+
+    /// Takes the events recorded since the last call.
+    pub fn drain_events(&mut self) -> Vec<LifecycleEvent> {
+        core::mem::take(&mut self.events)
+    }
+
+    /// The events recorded and not yet drained.
+    pub fn events(&self) -> &[LifecycleEvent] {
+        &self.events
+    }
+
+    fn tick_for(&self, id: ComponentId) -> Tick {
+        Tick {
+            time_ns: self.time_ns(),
+            period_ns: self.slots[id].period_ticks * self.base_period_ns,
+            index: self.next_tick,
+        }
+    }
+
+    fn record(
+        &mut self,
+        id: ComponentId,
+        from: LifecycleState,
+        callback: &'static str,
+        reason: Option<String>,
+    ) {
+        let to = self.slots[id].state;
+        if let Some(r) = &reason {
+            self.slots[id].last_error = Some(r.clone());
+        }
+        if from != to || reason.is_some() {
+            self.events.push(LifecycleEvent {
+                time_ns: self.time_ns(),
+                id,
+                component: self.slots[id].component.instance_name().to_owned(),
+                from,
+                to,
+                callback,
+                reason,
+            });
+        }
+    }
+
+    fn check(
+        &self,
+        id: ComponentId,
+        request: Request,
+        allowed: &[LifecycleState],
+        needs_running: bool,
+    ) -> Result<(), LifecycleError> {
+        let s = self.slot(id)?;
+        if !allowed.contains(&s.state) {
+            return Err(LifecycleError::InvalidTransition {
+                component: s.component.instance_name().to_owned(),
+                from: s.state,
+                request,
+            });
+        }
+        if needs_running && self.state != ContextState::Running {
+            return Err(LifecycleError::ContextNotRunning {
+                component: s.component.instance_name().to_owned(),
+                request,
+                context: self.state,
+            });
+        }
+        Ok(())
+    }
+
+    /// Active → Error through `on_aborting` (its own failure is recorded, the state is Error
+    /// all the same).
+    fn abort(&mut self, id: ComponentId, failed: &'static str, e: ComponentError) {
+        let from = self.slots[id].state;
+        let tick = self.tick_for(id);
+        let aborting = self.slots[id].component.on_aborting(&tick);
+        self.slots[id].state = LifecycleState::Error;
+        self.record(id, from, failed, Some(e.reason));
+        if let Err(e2) = aborting {
+            self.record(id, LifecycleState::Error, "on_aborting", Some(e2.reason));
+        }
+    }
+
+    /// Retries `on_initialize` for a component left in Created.
+    pub fn initialize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
+        self.check(id, Request::Initialize, &[LifecycleState::Created], false)?;
+        let r = self.slots[id].component.on_initialize();
+        match r {
+            Ok(()) => self.slots[id].state = LifecycleState::Inactive,
+            Err(e) => {
+                self.record(id, LifecycleState::Created, "on_initialize", Some(e.reason));
+                return Ok(LifecycleState::Created);
+            }
+        }
+        self.record(id, LifecycleState::Created, "on_initialize", None);
+        Ok(self.slots[id].state)
+    }
+
+    /// Inactive → Active (`on_activated`; on failure `on_aborting` → Error). `on_activation`
+    /// parameters are applied first. Returns the state reached.
+    pub fn activate(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
+        self.check(id, Request::Activate, &[LifecycleState::Inactive], true)?;
+        if let Some(cfg) = self.slots[id].component.configuration() {
+            cfg.apply_on_activation();
+        }
+        let tick = self.tick_for(id);
+        match self.slots[id].component.on_activated(&tick) {
+            Ok(()) => {
+                self.slots[id].state = LifecycleState::Active;
+                self.record(id, LifecycleState::Inactive, "on_activated", None);
+            }
+            Err(e) => self.abort(id, "on_activated", e),
+        }
+        Ok(self.slots[id].state)
+    }
+
+    /// Active → Inactive (`on_deactivated`; on failure `on_aborting` → Error).
+    pub fn deactivate(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
+        self.check(id, Request::Deactivate, &[LifecycleState::Active], true)?;
+        let tick = self.tick_for(id);
+        match self.slots[id].component.on_deactivated(&tick) {
+            Ok(()) => {
+                self.slots[id].state = LifecycleState::Inactive;
+                self.record(id, LifecycleState::Active, "on_deactivated", None);
+            }
+            Err(e) => self.abort(id, "on_deactivated", e),
+        }
+        Ok(self.slots[id].state)
+    }
+
+    /// Error → Inactive if `on_reset` succeeds; stays in Error if it fails.
+    pub fn reset(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
+        self.check(id, Request::Reset, &[LifecycleState::Error], true)?;
+        let tick = self.tick_for(id);
+        match self.slots[id].component.on_reset(&tick) {
+            Ok(()) => {
+                let s = &mut self.slots[id];
+                s.state = LifecycleState::Inactive;
+                s.fault = None;
+                s.last_error = None;
+                self.record(id, LifecycleState::Error, "on_reset", None);
+            }
+            Err(e) => self.record(id, LifecycleState::Error, "on_reset", Some(e.reason)),
+        }
+        Ok(self.slots[id].state)
+    }
+
+    /// Any state → Finalized (`on_finalize`, once). Afterwards every request is illegal.
+    pub fn finalize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
+        use LifecycleState::*;
+        self.check(
+            id,
+            Request::Finalize,
+            &[Created, Inactive, Active, Error],
+            false,
+        )?;
+        let from = self.slots[id].state;
+        let r = self.slots[id].component.on_finalize();
+        self.slots[id].state = Finalized;
+        self.record(id, from, "on_finalize", r.err().map(|e| e.reason));
+        Ok(Finalized)
+    }
+
+    /// Changes a component's rate; `on_rate_changed` runs if the context is Running (no
+    /// callback runs while it is Stopped; the new period is in every later [`Tick`]).
+    pub fn set_rate(&mut self, id: ComponentId, rate_hz: f64) -> Result<(), LifecycleError> {
+        use LifecycleState::*;
+        self.check(
+            id,
+            Request::ChangeRate,
+            &[Created, Inactive, Active, Error],
+            false,
+        )?;
+        let p = self.period_ticks(rate_hz)?;
+        self.slots[id].period_ticks = p;
+        if self.state == ContextState::Running {
+            let tick = self.tick_for(id);
+            if let Err(e) = self.slots[id].component.on_rate_changed(&tick) {
+                let st = self.slots[id].state;
+                self.record(id, st, "on_rate_changed", Some(e.reason));
+            }
+        }
+        Ok(())
+    }
+
+    /// Makes the component's next `on_execute` fail with `reason` (the page's "Inject fault").
+    pub fn inject_fault(&mut self, id: ComponentId, reason: &str) -> Result<(), LifecycleError> {
+        use LifecycleState::*;
+        self.check(id, Request::InjectFault, &[Inactive, Active], false)?;
+        self.slots[id].fault = Some(reason.to_owned());
+        Ok(())
+    }
+
+    /// Whether a fault is waiting for the component's next `on_execute`.
+    pub fn fault_pending(&self, id: ComponentId) -> Result<bool, LifecycleError> {
+        Ok(self.slot(id)?.fault.is_some())
+    }
+
+    /// Stopped → Running: `on_startup` for every alive component, in attachment order.
+    pub fn start(&mut self) -> Result<(), LifecycleError> {
+        self.switch(ContextState::Running)
+    }
+
+    /// Running → Stopped: `on_shutdown` for every alive component, in attachment order.
+    pub fn stop(&mut self) -> Result<(), LifecycleError> {
+        self.switch(ContextState::Stopped)
+    }
+
+    fn switch(&mut self, to: ContextState) -> Result<(), LifecycleError> {
+        if self.state == to {
+            return Err(LifecycleError::ContextAlready { state: to });
+        }
+        self.state = to;
+        for id in 0..self.slots.len() {
+            if !self.slots[id].state.is_alive() {
+                continue;
+            }
+            let tick = self.tick_for(id);
+            let (name, r) = match to {
+                ContextState::Running => ("on_startup", self.slots[id].component.on_startup(&tick)),
+                ContextState::Stopped => {
+                    ("on_shutdown", self.slots[id].component.on_shutdown(&tick))
+                }
+            };
+            if let Err(e) = r {
+                let st = self.slots[id].state;
+                self.record(id, st, name, Some(e.reason));
+            }
+        }
+        Ok(())
+    }
+
+    /// Runs one base tick (if Running; a Stopped context runs no callback, but time still
+    /// advances so a host's clock stays in step).
+    pub fn tick(&mut self) {
+        if self.state == ContextState::Running {
+            for id in 0..self.slots.len() {
+                if self.next_tick % self.slots[id].period_ticks == 0 {
+                    self.run_slot(id);
+                }
+            }
+        }
+        self.next_tick += 1;
+    }
+
+    /// Runs `n` base ticks.
+    pub fn run_ticks(&mut self, n: u64) {
+        for _ in 0..n {
+            self.tick();
+        }
+    }
+
+    fn run_slot(&mut self, id: ComponentId) {
+        let tick = self.tick_for(id);
+        match self.slots[id].state {
+            LifecycleState::Active => {
+                let r: ReturnCode = match self.slots[id].fault.take() {
+                    Some(reason) => Err(ComponentError::new(format!("injected fault: {reason}"))),
+                    None => self.slots[id].component.on_execute(&tick),
+                };
+                match r {
+                    Ok(()) => {
+                        if let Err(e) = self.slots[id].component.on_state_update(&tick) {
+                            self.abort(id, "on_state_update", e);
+                        }
+                    }
+                    Err(e) => self.abort(id, "on_execute", e),
+                }
+            }
+            LifecycleState::Error => {
+                if let Err(e) = self.slots[id].component.on_error(&tick) {
+                    self.record(id, LifecycleState::Error, "on_error", Some(e.reason));
+                }
+            }
+            _ => {}
+        }
+    }
+}

@@ -1,0 +1,21 @@
+//! The OpenRTM-style component model (SPEC §1, seed 003): lifecycle, execution context,
+//! data ports, IDL types and configuration.
+
+mod component;
+mod conf_file;
+mod config;
+mod execution_context;
+mod idl;
+mod port;
+mod state;
+
+pub use component::{Component, ComponentError, ReturnCode, Tick};
+pub use conf_file::{ConfEntry, ConfFile, ConfKey};
+pub use config::{
+    ConfigAccess, Configuration, DEFAULT_SET, ParamKind, ParamSpec, ParamType, ParameterSet,
+    Reflection,
+};
+pub use execution_context::{ComponentId, ExecutionContext, LifecycleEvent};
+pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
+pub use port::{InPort, OutPort};
+pub use state::{ContextState, LifecycleState, Request};

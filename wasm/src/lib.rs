@@ -1,0 +1,1 @@
+//! `rtnav-wasm`: the browser's handle over `rtnav` (no logic of its own).

@@ -1,0 +1,2 @@
+//! `cargo xtask`: the steps cargo alone cannot do.
+fn main() {}
