@@ -9,8 +9,15 @@
 //! cite its sections and the seed documents' sections (e.g. `000 §5.2.4.9`).
 #![warn(missing_docs)]
 
+pub mod components;
 pub mod errors;
+pub mod global;
+pub mod local;
 pub mod map;
+pub mod motion;
+#[cfg(feature = "render")]
+pub mod render;
 pub mod rtc;
+pub mod system;
 
 pub use errors::{Error, Result};

@@ -1,0 +1,2 @@
+//! `rtnav`: the headless runner.
+fn main() {}

@@ -1,0 +1,1 @@
+//! Global path planning: A* on the 8-connected grid (SPEC §5 "GlobalPathPlanning").
