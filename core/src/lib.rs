@@ -12,6 +12,7 @@
 pub mod components;
 pub mod errors;
 pub mod global;
+pub mod interfaces;
 pub mod local;
 pub mod map;
 pub mod motion;
