@@ -55,14 +55,14 @@ pub struct Tick {
 }
 
 impl Tick {
-    /// Simulated time in seconds.
+    /// Simulated time in seconds (correctly rounded: `0.1 s` is `0.1`; exact up to 2⁵³ ns).
     pub fn seconds(&self) -> f64 {
-        self.time_ns as f64 * 1e-9
+        self.time_ns as f64 / 1e9
     }
 
-    /// The period in seconds.
+    /// The period in seconds (correctly rounded, as [`Tick::seconds`]).
     pub fn period(&self) -> f64 {
-        self.period_ns as f64 * 1e-9
+        self.period_ns as f64 / 1e9
     }
 
     /// The timestamp of this tick, as the IDL's `RTC::Time`.

@@ -12,6 +12,8 @@
 //! Any other key is an error naming the key and the line; names inside `conf.*` are checked
 //! against the component's parameters when the file is applied ([`super::ConfigAccess::load_conf`]).
 
+use core::fmt;
+
 use crate::errors::ConfigError;
 
 /// What a `.conf` key refers to.
@@ -40,6 +42,19 @@ pub enum ConfKey {
     ActiveSet,
     /// `exec_cxt.periodic.rate`.
     ExecutionRate,
+}
+
+/// The key as a `.conf` file writes it, e.g. `conf.default.dmin` (errors name it).
+impl fmt::Display for ConfKey {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Param { set, name } => write!(f, "conf.{set}.{name}"),
+            Self::Widget { name } => write!(f, "conf.__widget__.{name}"),
+            Self::Meta { kind, name } => write!(f, "conf.__{kind}__.{name}"),
+            Self::ActiveSet => f.write_str("configuration.active_config"),
+            Self::ExecutionRate => f.write_str("exec_cxt.periodic.rate"),
+        }
+    }
 }
 
 /// One `key: value` line.

@@ -1,8 +1,9 @@
 //! Configuration parameters (SPEC §1 "Configuration parameters", 000 §4, 002 §4).
 //!
-//! A component declares its parameters once with [`define_parameters!`]: a plain struct the
-//! component reads with ordinary field access, plus a table of [`ParamSpec`] (the seed's name,
-//! unit, default, range and reflection timing). [`Configuration`] holds two copies:
+//! A component declares its parameters once with
+//! [`define_parameters!`](crate::define_parameters): a plain struct the component reads with
+//! ordinary field access, plus a table of [`ParamSpec`] (the seed's name, unit, default, range
+//! and reflection timing). [`Configuration`] holds two copies:
 //! - *requested*: what the user set (RT System Editor's ConfigurationView, a `.conf` file);
 //! - *effective*: what the component reads. An `always` parameter is copied at once; an
 //!   `on_activation` one when the component is activated (002 §5.2.3 (2)), so until then it
@@ -21,7 +22,8 @@ use crate::errors::ConfigError;
 pub enum Reflection {
     /// 常時: at the next tick.
     Always,
-    /// 初期化時: copied in `on_activated`, locked until the next activation.
+    /// 初期化時: copied when the component is activated (just before `on_activated`), then
+    /// locked until the next activation.
     OnActivation,
 }
 
@@ -90,7 +92,8 @@ impl ParamSpec {
         format!("{lo}, {hi}")
     }
 
-    /// Checks `value` against type and range.
+    /// Checks `value` against type and range. NaN and ±∞ are refused as out of range (every
+    /// range is finite or open at its infinite ends).
     pub fn check(&self, value: f64, line: Option<usize>) -> Result<f64, ConfigError> {
         if self.kind == ParamKind::Int && value.is_finite() && value.fract() != 0.0 {
             return Err(ConfigError::BadValue {
@@ -100,7 +103,7 @@ impl ParamSpec {
                 line,
             });
         }
-        if value.is_nan() || value < self.min || value > self.max {
+        if !value.is_finite() || value < self.min || value > self.max {
             return Err(ConfigError::OutOfRange {
                 name: self.name.to_owned(),
                 value: value.to_string(),
@@ -139,7 +142,7 @@ impl ParamSpec {
     }
 }
 
-/// A field type usable in [`define_parameters!`].
+/// A field type usable in [`define_parameters!`](crate::define_parameters).
 pub trait ParamType: Copy {
     /// The kind recorded in the spec.
     const KIND: ParamKind;
@@ -169,7 +172,7 @@ impl ParamType for i32 {
     }
 }
 
-/// A component's parameter struct; implemented by [`define_parameters!`].
+/// A component's parameter struct; implemented by [`define_parameters!`](crate::define_parameters).
 pub trait ParameterSet: Clone + PartialEq + fmt::Debug + 'static {
     /// The declarations, in the seed's table order.
     const SPECS: &'static [ParamSpec];
@@ -182,6 +185,10 @@ pub trait ParameterSet: Clone + PartialEq + fmt::Debug + 'static {
 }
 
 /// Declares a parameter struct and its [`ParameterSet`] table.
+///
+/// Each field is `name: type = (seed name, unit, default, min, max, reflection, description)`
+/// with `type` `f64` or `i32` and `reflection` `Always` or `OnActivation`. The struct derives
+/// serde's `Serialize` / `Deserialize`, so the calling crate needs `serde` (with `derive`).
 ///
 /// ```
 /// rtnav::define_parameters! {
@@ -254,12 +261,18 @@ macro_rules! define_parameters {
 pub const DEFAULT_SET: &str = "default";
 
 /// A component's configuration: requested and effective values, and named sets.
+///
+/// **Decision (configuration sets)**: every set holds a value for every parameter. A set a
+/// `.conf` file creates starts as a copy of the `default` set (after that file's `default`
+/// lines) and then takes the values the file names for it, so switching sets never depends on
+/// which set was active before. Setting a parameter changes the active set (as OpenRTM's
+/// ConfigurationView does).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Configuration<P: ParameterSet> {
+    /// The active set's values; always equal to `sets[active_set]`.
     requested: P,
     effective: P,
-    /// Named configuration sets: values given for some parameters (by spec index).
-    sets: BTreeMap<String, BTreeMap<usize, f64>>,
+    sets: BTreeMap<String, P>,
     active_set: String,
     /// `conf.__widget__.NAME` entries as read, kept for the GUI.
     widgets: BTreeMap<usize, String>,
@@ -275,7 +288,7 @@ impl<P: ParameterSet> Configuration<P> {
     /// Every parameter at its default, in the set `default`.
     pub fn new() -> Self {
         let mut sets = BTreeMap::new();
-        sets.insert(DEFAULT_SET.to_owned(), BTreeMap::new());
+        sets.insert(DEFAULT_SET.to_owned(), P::defaults());
         Self {
             requested: P::defaults(),
             effective: P::defaults(),
@@ -296,6 +309,11 @@ impl<P: ParameterSet> Configuration<P> {
         &self.requested
     }
 
+    /// The values of configuration set `name`, if it exists.
+    pub fn set_values(&self, name: &str) -> Option<&P> {
+        self.sets.get(name)
+    }
+
     fn index(name: &str, line: Option<usize>) -> Result<usize, ConfigError> {
         P::SPECS
             .iter()
@@ -306,14 +324,21 @@ impl<P: ParameterSet> Configuration<P> {
             })
     }
 
+    /// Makes `values` the requested values; `always` parameters take effect at once.
+    fn request(&mut self, values: P) {
+        for (i, spec) in P::SPECS.iter().enumerate() {
+            if spec.reflection == Reflection::Always {
+                self.effective.put(i, values.get(i));
+            }
+        }
+        self.sets.insert(self.active_set.clone(), values.clone());
+        self.requested = values;
+    }
+
     fn set_index(&mut self, i: usize, value: f64) {
-        self.requested.put(i, value);
-        if P::SPECS[i].reflection == Reflection::Always {
-            self.effective.put(i, value);
-        }
-        if let Some(set) = self.sets.get_mut(&self.active_set) {
-            set.insert(i, value);
-        }
+        let mut values = self.requested.clone();
+        values.put(i, value);
+        self.request(values);
     }
 }
 
@@ -328,7 +353,9 @@ pub trait ConfigAccess {
     fn effective_value(&self, name: &str) -> Result<f64, ConfigError>;
     /// Whether `name` has a requested value that waits for the next activation.
     fn is_pending(&self, name: &str) -> Result<bool, ConfigError>;
-    /// Sets `name`; an out-of-range value is refused and the old value stays.
+    /// Sets `name` in the active set; an `always` parameter takes effect at once, an
+    /// `on_activation` one is pending until the next activation. An unknown name or an
+    /// out-of-range value is refused and nothing changes.
     fn set(&mut self, name: &str, value: f64) -> Result<(), ConfigError>;
     /// Parses and sets `name` from text.
     fn set_text(&mut self, name: &str, text: &str) -> Result<(), ConfigError>;
@@ -339,7 +366,8 @@ pub trait ConfigAccess {
     fn set_names(&self) -> Vec<String>;
     /// The active configuration set.
     fn active_set(&self) -> &str;
-    /// Makes `name` the active set and applies its values (atomically).
+    /// Makes `name` the active set and requests its values (atomically; `on_activation`
+    /// parameters stay pending until the next activation).
     fn activate_set(&mut self, name: &str) -> Result<(), ConfigError>;
     /// Applies a parsed `.conf` file: every set it names is created or updated, the active
     /// set's values applied. Atomic: on any error nothing changes.
@@ -401,31 +429,55 @@ impl<P: ParameterSet> ConfigAccess for Configuration<P> {
                 name: name.to_owned(),
             })?;
         self.active_set = name.to_owned();
-        for (i, v) in values {
-            self.set_index(i, v);
-        }
+        self.request(values);
         Ok(())
     }
 
     fn load_conf(&mut self, conf: &ConfFile) -> Result<(), ConfigError> {
         let mut next = self.clone();
         let mut active = None;
+        // The values each set names, in file order (checked before anything is applied).
+        let mut named: BTreeMap<&str, Vec<(usize, f64)>> = BTreeMap::new();
         for e in &conf.entries {
+            // An unknown parameter is named by the whole key, as written in the file.
+            let index = |name: &str| {
+                Self::index(name, Some(e.line)).map_err(|_| ConfigError::UnknownParameter {
+                    name: e.key.to_string(),
+                    line: Some(e.line),
+                })
+            };
             match &e.key {
                 ConfKey::Param { set, name } => {
-                    let i = Self::index(name, Some(e.line))?;
+                    let i = index(name)?;
                     let v = P::SPECS[i].parse(&e.value, Some(e.line))?;
-                    next.sets.entry(set.clone()).or_default().insert(i, v);
+                    named.entry(set.as_str()).or_default().push((i, v));
                 }
-                ConfKey::Widget { name } | ConfKey::Meta { name, .. } => {
-                    let i = Self::index(name, Some(e.line))?;
-                    if matches!(e.key, ConfKey::Widget { .. }) {
-                        next.widgets.insert(i, e.value.clone());
-                    }
+                ConfKey::Widget { name } => {
+                    let i = index(name)?;
+                    next.widgets.insert(i, e.value.clone());
+                }
+                ConfKey::Meta { name, .. } => {
+                    index(name)?;
                 }
                 ConfKey::ActiveSet => active = Some(e.value.trim().to_owned()),
                 ConfKey::ExecutionRate => {}
             }
+        }
+        // `default` first: a set the file creates starts from it (Decision above).
+        let default_values = named.remove(DEFAULT_SET).unwrap_or_default();
+        for (set, values) in core::iter::once((DEFAULT_SET, default_values)).chain(named) {
+            let mut p = match next.sets.get(set) {
+                Some(p) => p.clone(),
+                None => next
+                    .sets
+                    .get(DEFAULT_SET)
+                    .cloned()
+                    .unwrap_or_else(P::defaults),
+            };
+            for (i, v) in values {
+                p.put(i, v);
+            }
+            next.sets.insert(set.to_owned(), p);
         }
         let set = active.unwrap_or_else(|| next.active_set.clone());
         next.activate_set(&set)?;
@@ -440,14 +492,7 @@ impl<P: ParameterSet> ConfigAccess for Configuration<P> {
         for (set, values) in &self.sets {
             out.push('\n');
             for (i, spec) in P::SPECS.iter().enumerate() {
-                let v = if set == &self.active_set {
-                    Some(self.requested.get(i))
-                } else {
-                    values.get(&i).copied()
-                };
-                if let Some(v) = v {
-                    out += &format!("conf.{set}.{}: {}\n", spec.name, spec.format(v));
-                }
+                out += &format!("conf.{set}.{}: {}\n", spec.name, spec.format(values.get(i)));
             }
         }
         if !self.widgets.is_empty() {

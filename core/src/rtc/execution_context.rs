@@ -7,13 +7,43 @@
 //!
 //! **Order (documented invariant)**: on base tick `k` (time `k · base_period`), every
 //! component whose period (in base ticks) divides `k` runs, in the order the components were
-//! attached. So with one component at 1 kHz attached first and one at 10 Hz second, base tick
-//! 0 runs both (1 kHz first), ticks 1..99 run only the first, tick 100 both again: exactly 100
-//! ticks of the first per tick of the second.
+//! attached; an Active component runs `on_execute` then `on_state_update` before the next
+//! component runs. So with one component at 1 kHz attached first and one at 10 Hz second, base
+//! tick 0 runs both (1 kHz first), ticks 1..99 run only the first, tick 100 both again:
+//! exactly 100 ticks of the first per tick of the second.
 //!
 //! Requests from outside (activate, deactivate, reset, …) are carried out at once, between
-//! ticks, at the current simulated time. An illegal request returns
-//! [`LifecycleError::InvalidTransition`] and changes nothing.
+//! ticks, at the current simulated time. An illegal request returns a [`LifecycleError`]
+//! (`InvalidTransition`, `ContextNotRunning`, `ContextAlready`, `UnknownComponent`,
+//! `InvalidRate`) and changes nothing: no callback runs, no state, fault or event changes.
+//!
+//! **Which callbacks need a Running context** (003: "停止状態においては全てのアクションは実行
+//! されません"): every callback the context drives — ticks, activate, deactivate, reset,
+//! `on_rate_changed`. `on_initialize` and `on_finalize` belong to the component's creation and
+//! end (OpenRTM's manager calls them, not the context), so attach, initialize and finalize
+//! work in either context state.
+//!
+//! **Decision (callback failures the table leaves open)**, following SPEC §1's table and
+//! OpenRTM-aist's `RTObjectStateMachine`. Every failure is recorded as a [`LifecycleEvent`]
+//! with its reason and kept as [`ExecutionContext::last_error`]; then:
+//!
+//! | callback fails | result |
+//! | --- | --- |
+//! | `on_initialize` | stays Created; [`ExecutionContext::initialize`] may retry |
+//! | `on_activated` | `on_aborting`, Error |
+//! | `on_execute` | `on_aborting`, Error; `on_state_update` does not run |
+//! | `on_state_update` | `on_aborting`, Error |
+//! | `on_deactivated` | Inactive all the same (the table has no failure branch; OpenRTM ignores it) |
+//! | `on_reset` | stays Error |
+//! | `on_aborting`, `on_error` | Error all the same |
+//! | `on_startup`, `on_shutdown` | the context starts / stops all the same; state unchanged |
+//! | `on_rate_changed` | the new rate holds; state unchanged (the table: "unchanged") |
+//! | `on_finalize` | Finalized all the same |
+//!
+//! **Decision (start/shutdown pairing)**: `on_startup` / `on_shutdown` run for *alive*
+//! components only (Inactive, Active, Error). A component that becomes alive while the
+//! context is Running (attached, or initialized after a failed `on_initialize`) gets its
+//! `on_startup` at once, so each `on_shutdown` follows one `on_startup`.
 
 use core::any::Any;
 
@@ -130,7 +160,7 @@ impl ExecutionContext {
 
     fn period_ticks(&self, rate_hz: f64) -> Result<u64, LifecycleError> {
         let p = period_ns(rate_hz)?;
-        if p % self.base_period_ns != 0 {
+        if !p.is_multiple_of(self.base_period_ns) {
             return Err(LifecycleError::InvalidRate {
                 rate: rate_hz,
                 reason: format!(
@@ -143,7 +173,8 @@ impl ExecutionContext {
     }
 
     /// Creates a component in this context: runs `on_initialize` (Created → Inactive; it stays
-    /// Created if that fails, and the failure is in the events). Returns its id.
+    /// Created if that fails, and the failure is in the events), then `on_startup` if the
+    /// context is Running. Returns its id; a bad rate attaches nothing.
     pub fn attach(
         &mut self,
         component: Box<dyn Component>,
@@ -188,7 +219,8 @@ impl ExecutionContext {
         Ok(self.slot(id)?.component.instance_name())
     }
 
-    /// The reason of the component's most recent callback failure, kept until it is reset.
+    /// The reason of the component's most recent callback failure, kept until a reset (or a
+    /// retried `on_initialize`) succeeds.
     pub fn last_error(&self, id: ComponentId) -> Result<Option<&str>, LifecycleError> {
         Ok(self.slot(id)?.last_error.as_deref())
     }
@@ -304,19 +336,21 @@ impl ExecutionContext {
         }
     }
 
-    /// Retries `on_initialize` for a component left in Created.
+    /// Runs `on_initialize` for a component in Created (at attach, or again after it failed):
+    /// Inactive on success, then `on_startup` if the context is Running; Created on failure.
     pub fn initialize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         self.check(id, Request::Initialize, &[LifecycleState::Created], false)?;
-        let r = self.slots[id].component.on_initialize();
-        match r {
-            Ok(()) => self.slots[id].state = LifecycleState::Inactive,
-            Err(e) => {
-                self.record(id, LifecycleState::Created, "on_initialize", Some(e.reason));
-                return Ok(LifecycleState::Created);
-            }
+        if let Err(e) = self.slots[id].component.on_initialize() {
+            self.record(id, LifecycleState::Created, "on_initialize", Some(e.reason));
+            return Ok(LifecycleState::Created);
         }
+        self.slots[id].state = LifecycleState::Inactive;
+        self.slots[id].last_error = None;
         self.record(id, LifecycleState::Created, "on_initialize", None);
-        Ok(self.slots[id].state)
+        if self.state == ContextState::Running {
+            self.start_or_stop(id, ContextState::Running);
+        }
+        Ok(LifecycleState::Inactive)
     }
 
     /// Inactive → Active (`on_activated`; on failure `on_aborting` → Error). `on_activation`
@@ -337,18 +371,20 @@ impl ExecutionContext {
         Ok(self.slots[id].state)
     }
 
-    /// Active → Inactive (`on_deactivated`; on failure `on_aborting` → Error).
+    /// Active → Inactive (`on_deactivated`). A failing `on_deactivated` is recorded and the
+    /// component is Inactive all the same (module doc, Decision).
     pub fn deactivate(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         self.check(id, Request::Deactivate, &[LifecycleState::Active], true)?;
         let tick = self.tick_for(id);
-        match self.slots[id].component.on_deactivated(&tick) {
-            Ok(()) => {
-                self.slots[id].state = LifecycleState::Inactive;
-                self.record(id, LifecycleState::Active, "on_deactivated", None);
-            }
-            Err(e) => self.abort(id, "on_deactivated", e),
-        }
-        Ok(self.slots[id].state)
+        let r = self.slots[id].component.on_deactivated(&tick);
+        self.slots[id].state = LifecycleState::Inactive;
+        self.record(
+            id,
+            LifecycleState::Active,
+            "on_deactivated",
+            r.err().map(|e| e.reason),
+        );
+        Ok(LifecycleState::Inactive)
     }
 
     /// Error → Inactive if `on_reset` succeeds; stays in Error if it fails.
@@ -368,7 +404,9 @@ impl ExecutionContext {
         Ok(self.slots[id].state)
     }
 
-    /// Any state → Finalized (`on_finalize`, once). Afterwards every request is illegal.
+    /// Any state → Finalized (`on_finalize`, once), with the context Running or Stopped. Only
+    /// `on_finalize` runs (SPEC §1's table). Afterwards every request about the component is
+    /// illegal and no callback of it runs again.
     pub fn finalize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         use LifecycleState::*;
         self.check(
@@ -384,8 +422,9 @@ impl ExecutionContext {
         Ok(Finalized)
     }
 
-    /// Changes a component's rate; `on_rate_changed` runs if the context is Running (no
-    /// callback runs while it is Stopped; the new period is in every later [`Tick`]).
+    /// Changes a component's rate; `on_rate_changed` runs if the context is Running and the
+    /// component is alive (no callback runs while the context is Stopped). The new period is
+    /// in every later [`Tick`]; the component runs on base ticks that are multiples of it.
     pub fn set_rate(&mut self, id: ComponentId, rate_hz: f64) -> Result<(), LifecycleError> {
         use LifecycleState::*;
         self.check(
@@ -396,7 +435,7 @@ impl ExecutionContext {
         )?;
         let p = self.period_ticks(rate_hz)?;
         self.slots[id].period_ticks = p;
-        if self.state == ContextState::Running {
+        if self.state == ContextState::Running && self.slots[id].state.is_alive() {
             let tick = self.tick_for(id);
             if let Err(e) = self.slots[id].component.on_rate_changed(&tick) {
                 let st = self.slots[id].state;
@@ -406,7 +445,11 @@ impl ExecutionContext {
         Ok(())
     }
 
-    /// Makes the component's next `on_execute` fail with `reason` (the page's "Inject fault").
+    /// Makes the component's next `on_execute` fail with `injected fault: {reason}` (the page's
+    /// "Inject fault"). The fault stands in for that `on_execute`: the component's own code does
+    /// not run on that tick, and the failure takes the usual path (`on_aborting`, Error). Legal
+    /// while Inactive or Active; a pending fault survives deactivation and is dropped by a
+    /// successful reset.
     pub fn inject_fault(&mut self, id: ComponentId, reason: &str) -> Result<(), LifecycleError> {
         use LifecycleState::*;
         self.check(id, Request::InjectFault, &[Inactive, Active], false)?;
@@ -435,22 +478,25 @@ impl ExecutionContext {
         }
         self.state = to;
         for id in 0..self.slots.len() {
-            if !self.slots[id].state.is_alive() {
-                continue;
-            }
-            let tick = self.tick_for(id);
-            let (name, r) = match to {
-                ContextState::Running => ("on_startup", self.slots[id].component.on_startup(&tick)),
-                ContextState::Stopped => {
-                    ("on_shutdown", self.slots[id].component.on_shutdown(&tick))
-                }
-            };
-            if let Err(e) = r {
-                let st = self.slots[id].state;
-                self.record(id, st, name, Some(e.reason));
+            if self.slots[id].state.is_alive() {
+                self.start_or_stop(id, to);
             }
         }
         Ok(())
+    }
+
+    /// `on_startup` (`to` = Running) or `on_shutdown` for one component; a failure is recorded.
+    fn start_or_stop(&mut self, id: ComponentId, to: ContextState) {
+        let tick = self.tick_for(id);
+        let c = &mut self.slots[id].component;
+        let (name, r) = match to {
+            ContextState::Running => ("on_startup", c.on_startup(&tick)),
+            ContextState::Stopped => ("on_shutdown", c.on_shutdown(&tick)),
+        };
+        if let Err(e) = r {
+            let st = self.slots[id].state;
+            self.record(id, st, name, Some(e.reason));
+        }
     }
 
     /// Runs one base tick (if Running; a Stopped context runs no callback, but time still
@@ -458,7 +504,7 @@ impl ExecutionContext {
     pub fn tick(&mut self) {
         if self.state == ContextState::Running {
             for id in 0..self.slots.len() {
-                if self.next_tick % self.slots[id].period_ticks == 0 {
+                if self.next_tick.is_multiple_of(self.slots[id].period_ticks) {
                     self.run_slot(id);
                 }
             }

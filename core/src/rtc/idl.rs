@@ -30,9 +30,9 @@ impl Time {
         u64::from(self.sec) * NANOS_PER_SEC + u64::from(self.nsec)
     }
 
-    /// Seconds as `f64`.
+    /// Seconds as `f64` (correctly rounded from the exact nanosecond count below 2⁵³ ns).
     pub fn as_secs_f64(self) -> f64 {
-        f64::from(self.sec) + f64::from(self.nsec) * 1e-9
+        self.as_nanos() as f64 / 1e9
     }
 }
 
@@ -43,11 +43,11 @@ pub struct TimedPosition {
     pub tm: Time,
     /// ID array (unused in the seeds).
     pub id: Vec<i32>,
-    /// X position [m].
+    /// X position (m).
     pub x: f64,
-    /// Y position [m].
+    /// Y position (m).
     pub y: f64,
-    /// Heading [rad], counter-clockwise from the X axis.
+    /// Heading (rad), counter-clockwise from the X axis.
     pub theta: f64,
     /// Error-code array (unused in the seeds).
     pub error: Vec<f64>,
@@ -60,11 +60,11 @@ pub struct TimedVelocity {
     pub tm: Time,
     /// ID array (unused in the seeds).
     pub id: Vec<i32>,
-    /// Forward speed [m/s].
+    /// Forward speed (m/s).
     pub vx: f64,
-    /// Sideways speed [m/s] (ignored by a differential drive).
+    /// Sideways speed (m/s) (ignored by a differential drive).
     pub vy: f64,
-    /// Turn rate [rad/s].
+    /// Turn rate (rad/s).
     pub w: f64,
     /// Error-code array (unused in the seeds).
     pub error: Vec<f64>,
