@@ -10,11 +10,11 @@ use crate::rtc::Time;
 /// (000 §5.2.4.2).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Pose {
-    /// X [m].
+    /// X in metres.
     pub x: f64,
-    /// Y [m].
+    /// Y in metres.
     pub y: f64,
-    /// Heading θ [rad].
+    /// Heading θ in radians.
     pub theta: f64,
 }
 
@@ -96,7 +96,7 @@ pub struct ControlPoints {
     pub points: Vec<(f64, f64)>,
     /// Forward or backward along the points.
     pub direction: Direction,
-    /// Heading to take at the last point [rad].
+    /// Heading to take at the last point, radians.
     pub goal_theta: f64,
 }
 
