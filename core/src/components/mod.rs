@@ -1,1 +1,14 @@
 //! The RT-components, one per file, named as in the seeds (SPEC §0).
+
+// --- motion: MotorControl (002), the physics, DriveControl, Localization (SPEC §4, §5) ---
+mod drive_control;
+mod localization;
+mod motor_control;
+mod physics_sim;
+
+pub use drive_control::{DriveControl, DriveControlParams, DriveStatus};
+pub use localization::{Localization, LocalizationMode, LocalizationParams};
+pub use motor_control::{
+    INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
+};
+pub use physics_sim::PhysicsSim;
