@@ -314,7 +314,7 @@ impl Rig {
     /// Runs `ms` ticks, sending the command every 20 ms (DriveControl's 50 Hz).
     fn drive(&mut self, v: f64, w: f64, ms: u64, mut each: impl FnMut(&Self)) {
         for _ in 0..ms {
-            if self.ec.tick_count() % 20 == 0 {
+            if self.ec.tick_count().is_multiple_of(20) {
                 self.command(v, w);
             }
             self.ec.tick();
@@ -375,7 +375,7 @@ fn half_metre_per_second_at_half_a_radian_per_second_drives_a_unit_circle() {
     rig.drive(0.5, 0.5, 10_000, |r| {
         tick += 1;
         // After the 0.3 s start-up transient, every 10 ms.
-        if tick >= 300 && tick % 10 == 0 {
+        if tick >= 300 && tick.is_multiple_of(10) {
             let p = r.sim().physics().pose();
             pts.push((p.x, p.y));
         }
