@@ -270,9 +270,9 @@ pub enum LocalPathError {
     OutsideMap {
         /// `start`, `goal` or `current position`.
         what: &'static str,
-        /// X [m].
+        /// X \[m\].
         x: f64,
-        /// Y [m].
+        /// Y \[m\].
         y: f64,
     },
     /// A position whose cell, or a cell within `dmin` of it, is an obstacle (000 §5.2.4.2,
@@ -284,15 +284,15 @@ pub enum LocalPathError {
     NotClear {
         /// `start`, `goal` or `current position`.
         what: &'static str,
-        /// X [m].
+        /// X \[m\].
         x: f64,
-        /// Y [m].
+        /// Y \[m\].
         y: f64,
         /// Its cell.
         cell: (usize, usize),
-        /// The cell's obstacle distance [m].
+        /// The cell's obstacle distance \[m\].
         distance: f64,
-        /// `dmin` [m].
+        /// `dmin` \[m\].
         dmin: f64,
     },
     /// A `MapUpdate` timestamp with `nsec` ≥ 10⁹.

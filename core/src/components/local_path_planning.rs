@@ -52,25 +52,27 @@ use crate::rtc::{
 define_parameters! {
     /// The configuration parameters of 000 §4.2, all reflected `always` (常時).
     pub struct LocalPathPlanningParams {
-        /// `RouteRemakeDistance` [m]: path distance from the current position to the local
+        /// `RouteRemakeDistance` \[m\]: path distance from the current position to the local
         /// target (局所経路を生成する際の現在位置から目標位置までの経路上の距離).
         route_remake_distance: f64 = ("RouteRemakeDistance", "m", 10.0, 0.0, f64::INFINITY, Always,
             "path distance from the current position to the local target"),
-        /// `Deviatinglen` [m]: deviation that triggers a local replan (経路逸脱限界距離).
+        /// `Deviatinglen` \[m\]: deviation that triggers a local replan (経路逸脱限界距離).
         deviatinglen: f64 = ("Deviatinglen", "m", 0.1, 0.0, f64::INFINITY, Always,
             "deviation from the path that triggers a local replan"),
-        /// `dmin` [m]: closest allowed approach to an obstacle (障害物に近づくことができる距離).
+        /// `dmin` \[m\]: closest allowed approach to an obstacle (障害物に近づくことができる距離).
+        /// The seed's table gives its unit as "-"; it is compared with obstacle distances in
+        /// metres, so SPEC §3 gives `m`.
         dmin: f64 = ("dmin", "m", 0.5, 0.0, f64::INFINITY, Always,
             "closest allowed approach to an obstacle"),
-        /// `PostureConsiderationLevel` [%]: weight of the start/goal posture
+        /// `PostureConsiderationLevel` \[%\]: weight of the start/goal posture
         /// (スタート姿勢・ゴール姿勢の考慮レベル).
         posture_consideration_level: f64 = ("PostureConsiderationLevel", "%", 85.0, 0.0, 100.0, Always,
             "weight of the start and goal posture"),
-        /// `NotPostureDistance` [m]: within this straight distance of the goal, posture is
+        /// `NotPostureDistance` \[m\]: within this straight distance of the goal, posture is
         /// ignored (姿勢を考慮せずに経路生成を行う目標位置からの距離).
         not_posture_distance: f64 = ("NotPostureDistance", "m", 1.0, 0.0, f64::INFINITY, Always,
             "within this straight distance of the goal the posture is not considered"),
-        /// `TargetArea` [m]: near the goal, forward/backward is chosen by where the goal lies
+        /// `TargetArea` \[m\]: near the goal, forward/backward is chosen by where the goal lies
         /// (目標位置付近において前進、後進を変更しつつ目標位置に近づく経路生成を行う範囲).
         target_area: f64 = ("TargetArea", "m", 0.5, 0.0, f64::INFINITY, Always,
             "near the goal, forward or backward is chosen by where the goal lies"),
@@ -113,7 +115,7 @@ pub struct LocalPathPlanning {
     config: Configuration<LocalPathPlanningParams>,
     /// `InCurrentPosition`: the robot's current pose (000 §3.1).
     pub in_current_position: InPort<TimedPosition>,
-    /// `InDeviating`: distance of the robot from its target trajectory [m] (000 §3.1).
+    /// `InDeviating`: distance of the robot from its target trajectory \[m\] (000 §3.1).
     pub in_deviating: InPort<TimedDouble>,
     /// `InventGUICons`: the grid path for the GUI (000 §3.2.1).
     pub invent_gui_cons: OutPort<GridPath>,
@@ -193,13 +195,15 @@ impl LocalPathPlanning {
 
     // ----- LocalPath service (000 §3.2.2.1) -----
 
-    /// `SetPosition` (000 §3.2.2.1 (1), §5.2.4.2): stores start and goal [m, rad] and the
+    /// `SetPosition` (000 §3.2.2.1 (1), §5.2.4.2): stores start and goal \[m, rad\] and the
     /// direction (1 forward, 2 backward); the start becomes the current position.
     ///
     /// Refused (nothing changes) for a non-finite number, a direction other than 1/2, no map,
     /// or a start/goal outside the map or whose cell or any cell within `dmin` is an
-    /// obstacle. Accepting it clears arrival, SafeMode and a pending replan request; the
-    /// held path stays (GlobalPathPlanning sends the new one).
+    /// obstacle. Accepting it clears arrival, SafeMode, a pending replan request and the
+    /// field and local plan drawn for the old goal; the held path stays (GlobalPathPlanning
+    /// sends the new one; until then a replan on the old path fails with
+    /// [`LocalPathError::GoalNotOnPath`] unless it passes the new goal).
     #[allow(clippy::too_many_arguments)]
     pub fn set_position(
         &mut self,
@@ -251,6 +255,9 @@ impl LocalPathPlanning {
         self.flags.arrived = libm::hypot(goal_x - start_x, goal_y - start_y) <= map.grid_size();
         self.flags.replan_request = false;
         self.flags.safe_mode = false;
+        // The field and local plan drawn were for the old start/goal.
+        self.field_valid = false;
+        self.plan = None;
         Ok(())
     }
 
@@ -471,7 +478,7 @@ impl LocalPathPlanning {
         self.current
     }
 
-    /// The last deviation read from `InDeviating` [m].
+    /// The last deviation read from `InDeviating` \[m\].
     pub fn deviation(&self) -> Option<f64> {
         self.deviation
     }

@@ -17,13 +17,13 @@ pub struct LocalTarget {
     pub match_index: usize,
     /// Index of the goal cell in the held path (the end of the merged path).
     pub goal_index: usize,
-    /// The robot heading wanted at the target [rad], in (−π, π]: the goal heading at the
+    /// The robot heading wanted at the target \[rad\], in (−π, π]: the goal heading at the
     /// goal, else the direction of the path at the target (turned by π when driving
     /// backward, since the robot then faces against its motion).
     pub heading: f64,
     /// Whether the target is the goal cell.
     pub is_goal: bool,
-    /// Distance walked along the path from the match to the target [m].
+    /// Distance walked along the path from the match to the target \[m\].
     pub path_distance: f64,
 }
 
@@ -39,7 +39,7 @@ pub fn wrap_angle(a: f64) -> f64 {
     r
 }
 
-/// Length of one path step [m]: `g` straight, `√2·g` diagonal (any other step: its
+/// Length of one path step \[m\]: `g` straight, `√2·g` diagonal (any other step: its
 /// straight length).
 pub fn step_length(a: Cell, b: Cell, grid_size: f64) -> f64 {
     let dx = a.0.abs_diff(b.0) as f64;

@@ -16,13 +16,13 @@ use crate::map::{Cell, GridMap};
 /// The configuration parameters a plan uses (000 §4.2).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct PlanParams {
-    /// `RouteRemakeDistance` [m]: path distance from the current position to the target.
+    /// `RouteRemakeDistance` \[m\]: path distance from the current position to the target.
     pub route_remake_distance: f64,
-    /// `dmin` [m]: closest allowed approach to an obstacle.
+    /// `dmin` \[m\]: closest allowed approach to an obstacle.
     pub dmin: f64,
-    /// `PostureConsiderationLevel` [%].
+    /// `PostureConsiderationLevel` \[%\].
     pub posture_consideration_level: f64,
-    /// `NotPostureDistance` [m]: within this straight distance of the goal, no posture part.
+    /// `NotPostureDistance` \[m\]: within this straight distance of the goal, no posture part.
     pub not_posture_distance: f64,
 }
 

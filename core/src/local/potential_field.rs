@@ -93,16 +93,16 @@ pub struct FieldRequest {
     pub target: Cell,
     /// The current cell: where the descent starts; the origin of `SL` and `S_Angle`.
     pub current: Cell,
-    /// The robot's current heading [rad].
+    /// The robot's current heading \[rad\].
     pub current_heading: f64,
-    /// The robot's heading wanted at the target [rad].
+    /// The robot's heading wanted at the target \[rad\].
     pub target_heading: f64,
     /// Forward, or backward: then both headings are turned by π (SPEC §3 step 4), since
     /// the robot moves against its heading.
     pub direction: Direction,
-    /// `dmin` [m]: cells with obstacle distance ≤ `dmin` are impassable.
+    /// `dmin` \[m\]: cells with obstacle distance ≤ `dmin` are impassable.
     pub dmin: f64,
-    /// `PostureConsiderationLevel` [%], 0–100.
+    /// `PostureConsiderationLevel` \[%\], 0–100.
     pub posture_consideration_level: f64,
     /// Whether the posture part is used; the planner turns it off within
     /// `NotPostureDistance` of the goal (000 §5.2.4.9).
@@ -126,7 +126,7 @@ pub struct CellInfo {
     pub attraction: f64,
     /// Posture `P`.
     pub posture: f64,
-    /// Path length `L` to the target along the parents [m].
+    /// Path length `L` to the target along the parents \[m\].
     pub length: f64,
     /// The neighbour it got its potential from.
     pub parent: Option<Cell>,
@@ -151,7 +151,7 @@ pub struct FieldCell {
     pub attraction: f64,
     /// Posture `P`.
     pub posture: f64,
-    /// Path length `L` to the target along the parents [m].
+    /// Path length `L` to the target along the parents \[m\].
     pub length: f64,
     rank: u32,
     parent: u8,
@@ -360,7 +360,7 @@ impl PotentialField {
         self.height
     }
 
-    /// Cell size [m] of the map it was computed on.
+    /// Cell size \[m\] of the map it was computed on.
     pub fn grid_size(&self) -> f64 {
         self.grid_size
     }
@@ -464,7 +464,7 @@ impl PotentialField {
 
 /// `G_Angle · G_Distance + S_Angle · S_Distance` of SPEC §3 step 4, from integer cell
 /// offsets `v` = current → c and `w` = c → target, unit motion headings `hs`, `ht`, and the
-/// path length `l` [m]. 0 where `SL` or `GL` is 0. Angles are in [0, π], computed as
+/// path length `l` \[m\]. 0 where `SL` or `GL` is 0. Angles are in [0, π], computed as
 /// `atan2(|v × h|, v · h)`, which needs no wrapping.
 fn posture_terms(
     vx: i64,
