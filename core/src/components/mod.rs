@@ -12,3 +12,7 @@ pub use motor_control::{
     INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
 };
 pub use physics_sim::PhysicsSim;
+
+// --- LocalPathPlanning (branch `local`) ---
+pub mod local_path_planning;
+pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams};
