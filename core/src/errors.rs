@@ -547,3 +547,7 @@ pub enum RenderError {
         reason: String,
     },
 }
+
+fn at_index(index: Option<usize>) -> String {
+    index.map(|i| format!("[{i}]")).unwrap_or_default()
+}
