@@ -16,3 +16,7 @@ pub use physics_sim::PhysicsSim;
 // --- LocalPathPlanning (branch `local`) ---
 pub mod local_path_planning;
 pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams};
+
+// Demo component for the browser page until the robot system exists (tooling issue).
+pub mod heartbeat;
+pub use heartbeat::{Heartbeat, HeartbeatParams};
