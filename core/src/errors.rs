@@ -259,11 +259,11 @@ pub enum GlobalPlanningError {
     NonFinitePose {
         /// `start` or `goal`.
         which: &'static str,
-        /// x [m].
+        /// x (m).
         x: f64,
-        /// y [m].
+        /// y (m).
         y: f64,
-        /// θ [rad].
+        /// θ (rad).
         theta: f64,
     },
     /// A start or goal outside the map.
@@ -271,9 +271,9 @@ pub enum GlobalPlanningError {
     OutsideMap {
         /// `start` or `goal`.
         which: &'static str,
-        /// x [m].
+        /// x (m).
         x: f64,
-        /// y [m].
+        /// y (m).
         y: f64,
     },
     /// A start or goal cell outside the planning grid.
@@ -299,7 +299,7 @@ pub enum GlobalPlanningError {
         which: &'static str,
         /// The cell.
         cell: (usize, usize),
-        /// The `dmin` in force [m].
+        /// The `dmin` in force (m).
         dmin: f64,
     },
     /// No path joins start and goal.

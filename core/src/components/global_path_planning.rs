@@ -29,7 +29,7 @@ use crate::rtc::{Component, ConfigAccess, Configuration, OutPort, ReturnCode, Ti
 crate::define_parameters! {
     /// GlobalPathPlanning's configuration parameters (SPEC §5; `dmin` as in 000 §4.2).
     pub struct GlobalPathPlanningParams {
-        /// Closest allowed approach to an obstacle [m]: cells whose obstacle distance is
+        /// Closest allowed approach to an obstacle (m): cells whose obstacle distance is
         /// ≤ `dmin` are impassable. `always`: the next plan uses the new value.
         dmin: f64 = ("dmin", "m", 0.5, 0.0, f64::INFINITY, Always,
             "closest allowed approach to an obstacle"),

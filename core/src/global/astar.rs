@@ -77,17 +77,25 @@ trait Key:
     + RadixKey
 {
     fn of(cost: OctileCost) -> Self;
+    /// `n` times `self`.
+    fn times(self, n: u32) -> Self;
 }
 
 impl Key for u64 {
     fn of(cost: OctileCost) -> Self {
         cost.small_key()
     }
+    fn times(self, n: u32) -> Self {
+        self * u64::from(n)
+    }
 }
 
 impl Key for u128 {
     fn of(cost: OctileCost) -> Self {
         cost.key()
+    }
+    fn times(self, n: u32) -> Self {
+        self * u128::from(n)
     }
 }
 
@@ -182,7 +190,7 @@ impl AStar {
         self.height
     }
 
-    /// The `dmin` it was made for [m].
+    /// The `dmin` it was made for (m).
     pub fn dmin(&self) -> f64 {
         self.dmin
     }
@@ -352,9 +360,12 @@ impl Search<'_> {
         let diagonal = K::of(OctileCost::DIAGONAL);
         let (gx, gy) = (self.goal.0 as u32, self.goal.1 as u32);
         // h of a cell.
+        // h = (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
+        // min·(key(√2) − key(1)) (keys are linear and exact).
+        let (unit, extra) = (straight, diagonal - straight);
         let heuristic = |x: u32, y: u32| {
             let (dx, dy) = (x.abs_diff(gx), y.abs_diff(gy));
-            K::of(OctileCost::new(dx.abs_diff(dy), dx.min(dy)))
+            K::times(unit, dx.max(dy)) + K::times(extra, dx.min(dy))
         };
         cells[s] = tag;
         g[s] = K::default();
