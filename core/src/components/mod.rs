@@ -12,3 +12,10 @@ pub use motor_control::{
     INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
 };
 pub use physics_sim::PhysicsSim;
+
+// --- system: MapBuilder / MapMaintenance (SPEC §5) ---
+mod map_builder;
+mod map_maintenance;
+
+pub use map_builder::{MapBuilder, SetMapMessage};
+pub use map_maintenance::{MapMaintenance, MapUpdate};
