@@ -13,6 +13,10 @@ pub use motor_control::{
 };
 pub use physics_sim::PhysicsSim;
 
+// --- LocalPathPlanning (branch `local`) ---
+pub mod local_path_planning;
+pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams};
+
 // --- system: MapBuilder / MapMaintenance (SPEC §5) ---
 mod map_builder;
 mod map_maintenance;

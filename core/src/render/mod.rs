@@ -1,1 +1,34 @@
-//! The renderer: one tiny-skia drawing of the system for PNGs and the browser canvas.
+//! The renderer: one tiny-skia drawing of the system for PNGs and the browser canvas
+//! (SPEC §5 InventGUI).
+//!
+//! A [`Scene`] borrows plain data — the [`GridMap`](crate::map::GridMap), `dmin`, an optional
+//! potential field ([`FieldView`]), paths as cells, control points, the local target, the
+//! robot ([`RobotView`]), its trail, start and goal, the direction and a caption — and
+//! [`Layers`] says what to show. A [`Renderer`] draws it into its [`Frame`]: opaque RGBA for a
+//! browser `ImageData`, or a PNG via [`Frame::encode_png`]. [`ViewTransform`] maps world
+//! points to frame pixels and back (clicks).
+//!
+//! Layers, bottom to top: occupancy, `dmin` zone, heat map (log scale, viridis) — cached —
+//! then global path, trail, local path, control points, start/goal arrows, local target,
+//! robot; the side panel holds the colour bar, legend, scale bar, direction and caption.
+//!
+//! **Architecture Invariant**: `render` knows only `map` and `interfaces`: no planner,
+//! motion or system type. **Determinism** (SPEC §6): angles through `libm`, no `sin`/`cos`
+//! inside tiny-skia (no rotation transforms, no cubics), tiny-skia built without its `simd`
+//! feature so native and wasm32 run the same scalar code: a scene gives the same bytes on
+//! both.
+
+mod draw;
+mod font;
+mod frame;
+mod panel;
+mod raster;
+mod renderer;
+mod scene;
+mod style;
+mod view;
+
+pub use frame::Frame;
+pub use renderer::Renderer;
+pub use scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
+pub use view::{MAX_FRAME_SIDE, ViewTransform};

@@ -1,0 +1,355 @@
+//! The [`Renderer`]: draws a [`Scene`] into its own [`Frame`], caching the static layers.
+//!
+//! A frame is the cached background (map raster, `dmin` zone, heat map, map border and the
+//! static panel) copied in, then the moving things drawn over it. The background is rebuilt
+//! only when its inputs change — the caller's map and field keys, the map geometry, `dmin`
+//! or the layers — and the heat-map colours only when the field's key changes, so a frame
+//! costs a copy and a few paths (see `benches/render.rs`).
+
+use tiny_skia::Pixmap;
+
+use super::draw::{self, Px};
+use super::frame::Frame;
+use super::panel::{self, PanelInput, TextArea};
+use super::raster::{Base, Heat, LogBins, Rgba, draw_map, fill_rect, viridis};
+use super::scene::{Layers, Scene};
+use super::style;
+use super::view::{Layout, ViewTransform};
+use crate::errors::RenderError;
+use crate::interfaces::Direction;
+use crate::map::GridMap;
+use crate::rtc::Time;
+
+/// What identifies a map for the caches.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct MapKey {
+    key: u64,
+    width: usize,
+    height: usize,
+    grid_size: u64,
+    origin: (u64, u64),
+    version: Time,
+}
+
+impl MapKey {
+    fn of(map: &GridMap, key: u64) -> Self {
+        Self {
+            key,
+            width: map.width(),
+            height: map.height(),
+            grid_size: map.grid_size().to_bits(),
+            origin: (map.origin().0.to_bits(), map.origin().1.to_bits()),
+            version: map.version(),
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct BackgroundKey {
+    map: MapKey,
+    dmin: u64,
+    field: Option<u64>,
+    layers: Layers,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct BaseKey {
+    map: MapKey,
+    dmin: u64,
+    occupancy: bool,
+    dmin_zone: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct HeatKey {
+    map: MapKey,
+    field: u64,
+}
+
+/// Paths and the trail are drawn through the fewest points within this many pixels of them.
+const SIMPLIFY: f32 = 0.5;
+
+/// Draws scenes into an owned `width × height` frame (SPEC §5 InventGUI): the runner's PNGs
+/// and the browser canvas. Keep one per canvas: it caches the static layers between frames.
+pub struct Renderer {
+    layout: Layout,
+    frame: Frame,
+    background: Pixmap,
+    background_key: Option<BackgroundKey>,
+    text_area: Option<TextArea>,
+    base: Option<(BaseKey, Base)>,
+    heat: Option<(HeatKey, Heat)>,
+    log: LogBins,
+    viridis: [Rgba; 256],
+}
+
+impl std::fmt::Debug for Renderer {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Renderer")
+            .field("width", &self.layout.width)
+            .field("height", &self.layout.height)
+            .field("background_key", &self.background_key)
+            .field("base_cached", &self.base.as_ref().map(|b| b.0))
+            .field("heat_cached", &self.heat.as_ref().map(|h| h.0))
+            .finish_non_exhaustive()
+    }
+}
+
+fn pixmap(width: u32, height: u32) -> Result<Pixmap, RenderError> {
+    Pixmap::new(width, height).ok_or(RenderError::FrameSize {
+        width,
+        height,
+        max: super::view::MAX_FRAME_SIDE,
+    })
+}
+
+impl Renderer {
+    /// A renderer for `width × height` frames (each side 1..=[`super::MAX_FRAME_SIDE`]).
+    pub fn new(width: u32, height: u32) -> Result<Self, RenderError> {
+        let layout = Layout::new(width, height)?;
+        Ok(Self {
+            layout,
+            frame: Frame {
+                pixmap: pixmap(width, height)?,
+            },
+            background: pixmap(width, height)?,
+            background_key: None,
+            text_area: None,
+            base: None,
+            heat: None,
+            log: LogBins::new(),
+            viridis: viridis(),
+        })
+    }
+
+    /// Changes the frame size (the heat-map colours stay cached). On error nothing changes.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), RenderError> {
+        if (width, height) == (self.layout.width, self.layout.height) {
+            return Ok(());
+        }
+        let layout = Layout::new(width, height)?;
+        let (frame, background) = (pixmap(width, height)?, pixmap(width, height)?);
+        self.layout = layout;
+        self.frame = Frame { pixmap: frame };
+        self.background = background;
+        self.background_key = None;
+        self.text_area = None;
+        Ok(())
+    }
+
+    /// Forgets the cached layers, so the next frame redraws everything.
+    pub fn invalidate(&mut self) {
+        self.background_key = None;
+        self.base = None;
+        self.heat = None;
+    }
+
+    /// Frame width in pixels.
+    pub fn width(&self) -> u32 {
+        self.layout.width
+    }
+
+    /// Frame height in pixels.
+    pub fn height(&self) -> u32 {
+        self.layout.height
+    }
+
+    /// The view this renderer uses for `map`: world ↔ pixel, for turning clicks into world
+    /// coordinates and back.
+    pub fn view(&self, map: &GridMap) -> ViewTransform {
+        self.layout.view(map)
+    }
+
+    /// The last frame drawn (blank before the first).
+    pub fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// Draws `scene` and returns the frame. A scene with a non-finite number, a negative
+    /// size or `dmin`, a path cell outside the map, per-cell arrays of the wrong length or
+    /// (when the heat map is shown and its field is new) a reached cell without a positive
+    /// finite potential is refused with an error, and nothing held changes: the frame keeps
+    /// the last drawing.
+    pub fn render(&mut self, scene: &Scene<'_>) -> Result<&Frame, RenderError> {
+        scene.validate()?;
+        let map = scene.map;
+        let map_key = MapKey::of(map, scene.map_key);
+        let field = scene.field.filter(|_| scene.layers.heat_map);
+        if let Some(f) = &field {
+            let key = HeatKey {
+                map: map_key,
+                field: f.key,
+            };
+            if self.heat.as_ref().map(|h| h.0) != Some(key) {
+                let heat = Heat::new(f, &self.log, &self.viridis)?;
+                self.heat = Some((key, heat));
+            }
+        }
+        let base_key = BaseKey {
+            map: map_key,
+            dmin: scene.dmin.to_bits(),
+            occupancy: scene.layers.occupancy,
+            dmin_zone: scene.layers.dmin_zone,
+        };
+        if self.base.as_ref().map(|b| b.0) != Some(base_key) {
+            self.base = Some((base_key, Base::new(map, scene.dmin, &scene.layers)));
+        }
+        let view = self.layout.view(map);
+        let key = BackgroundKey {
+            map: map_key,
+            dmin: scene.dmin.to_bits(),
+            field: field.map(|f| f.key),
+            layers: scene.layers,
+        };
+        if self.background_key != Some(key) {
+            self.draw_background(scene, &view, field.is_some());
+            self.background_key = Some(key);
+        }
+        self.frame
+            .pixmap
+            .data_mut()
+            .copy_from_slice(self.background.data());
+        self.draw_overlays(scene, &view);
+        self.draw_panel_text(scene);
+        Ok(&self.frame)
+    }
+
+    fn draw_background(&mut self, scene: &Scene<'_>, view: &ViewTransform, heat_on: bool) {
+        let (width, height) = (self.layout.width, self.layout.height);
+        let heat = self.heat.as_ref().map(|h| &h.1).filter(|_| heat_on);
+        let bg = &mut self.background;
+        fill_rect(bg.data_mut(), width, (0, 0, width, height), style::PAGE);
+        if let Some((_, base)) = &self.base {
+            draw_map(bg.data_mut(), width, view, scene.map, base, heat);
+        }
+        let (l, t, r, b) = view.map_rect();
+        let (l, t, r, b) = (l as f32, t as f32, r as f32, b as f32);
+        draw::polygon_outline(
+            bg,
+            &[
+                (l - 0.5, t - 0.5),
+                (r + 0.5, t - 0.5),
+                (r + 0.5, b + 0.5),
+                (l - 0.5, b + 0.5),
+            ],
+            1.0,
+            style::BORDER,
+        );
+        self.text_area = panel::draw_static(
+            bg,
+            &self.layout,
+            view,
+            &PanelInput {
+                layers: scene.layers,
+                has_field: heat_on,
+                range: heat.and_then(|h| h.range),
+                viridis: &self.viridis,
+            },
+        );
+    }
+
+    fn draw_overlays(&mut self, scene: &Scene<'_>, view: &ViewTransform) {
+        let layers = scene.layers;
+        let u = self.layout.unit;
+        let uf = f64::from(u);
+        let map = scene.map;
+        let px = |x: f64, y: f64| -> (f64, f64) { view.world_to_pixel(x, y) };
+        let to_f32 = |p: (f64, f64)| -> Px { (p.0 as f32, p.1 as f32) };
+        let cells = |path: &[(usize, usize)]| -> Vec<Px> {
+            path.iter()
+                .map(|&c| {
+                    let (x, y) = map.cell_center(c);
+                    to_f32(px(x, y))
+                })
+                .collect()
+        };
+        let pm = &mut self.frame.pixmap;
+        if layers.global_path && !scene.global_path.is_empty() {
+            let pts = draw::simplify(&cells(scene.global_path), SIMPLIFY);
+            draw::polyline(pm, &pts, 10.0 * u, style::GLOBAL_PATH.with_alpha(100));
+        }
+        if layers.trail && scene.trail.len() >= 2 {
+            let pts = draw::decimate(scene.trail.iter().map(|&(x, y)| to_f32(px(x, y))));
+            let pts = draw::simplify(&pts, SIMPLIFY);
+            draw::polyline(pm, &pts, 1.5 * u, style::TRAIL);
+        }
+        if layers.local_path && !scene.local_path.is_empty() {
+            let pts = draw::simplify(&cells(scene.local_path), SIMPLIFY);
+            draw::polyline(pm, &pts, 4.0 * u, style::HALO);
+            draw::polyline(pm, &pts, 2.5 * u, style::LOCAL_PATH);
+        }
+        if layers.control_points && !scene.control_points.is_empty() {
+            let pts: Vec<Px> = scene
+                .control_points
+                .iter()
+                .map(|&(x, y)| to_f32(px(x, y)))
+                .collect();
+            for &p in &pts {
+                draw::disc(pm, p, 3.5 * u, style::CONTROL_LINE);
+                draw::disc(pm, p, 2.3 * u, style::CONTROL_FILL);
+            }
+        }
+        let arrow = 18.0 * uf;
+        if layers.start_goal {
+            for (pose, c) in [(scene.start, style::START), (scene.goal, style::GOAL)] {
+                if let Some(p) = pose {
+                    let d = draw::heading(p.theta);
+                    draw::pose_arrow(pm, px(p.x, p.y), d, arrow, u, c);
+                }
+            }
+        }
+        if let Some(p) = scene.local_target.filter(|_| layers.local_target) {
+            panel::target_marker(pm, px(p.x, p.y), draw::heading(p.theta), u);
+        }
+        if let Some(r) = scene.robot.filter(|_| layers.robot) {
+            let s = view.pixels_per_metre();
+            // A radius of at least 5 units, so a robot on a huge map stays visible.
+            let body = (r.body_radius * s).max(5.0 * uf);
+            let f = if r.body_radius > 0.0 {
+                body / (r.body_radius * s)
+            } else {
+                1.0
+            };
+            draw::robot(
+                pm,
+                px(r.pose.x, r.pose.y),
+                draw::heading(r.pose.theta),
+                body,
+                r.axle_length * s * f,
+                r.wheel_radius * s * f,
+                r.bumped,
+                scene.direction == Direction::Backward,
+                u,
+            );
+        }
+    }
+
+    /// Restores the panel (overlays may reach into it) and writes the direction and caption.
+    fn draw_panel_text(&mut self, scene: &Scene<'_>) {
+        let Some(p) = self.layout.panel else { return };
+        let width = self.layout.width as usize;
+        let (x0, x1) = (p.x as usize * 4, (p.x + p.w) as usize * 4);
+        let src = self.background.data();
+        let dst = self.frame.pixmap.data_mut();
+        for y in p.y as usize..(p.y + p.h) as usize {
+            let row = y * width * 4;
+            dst[row + x0..row + x1].copy_from_slice(&src[row + x0..row + x1]);
+        }
+        if !scene.layers.caption {
+            return;
+        }
+        if let Some(area) = self.text_area {
+            let direction = match scene.direction {
+                Direction::Forward => "drive: forward",
+                Direction::Backward => "drive: backward",
+            };
+            panel::draw_dynamic(
+                &mut self.frame.pixmap,
+                &self.layout,
+                area,
+                direction,
+                scene.caption,
+            );
+        }
+    }
+}
