@@ -555,6 +555,7 @@ pub enum RenderError {
 
 fn at_index(index: Option<usize>) -> String {
     index.map(|i| format!("[{i}]")).unwrap_or_default()
+}
 
 // --- system: the whole system, scenarios, trace (SPEC §0, §6) ---
 
