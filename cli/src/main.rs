@@ -243,24 +243,7 @@ fn run(
 
 fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
-    let mut system = System::new(scenario.rates).map_err(|e| e.to_string())?;
-    for (component, params) in &scenario.config {
-        let kind = rtnav::system::ComponentKind::from_name(component).map_err(|e| e.to_string())?;
-        let cfg = system.config_mut(kind).map_err(|e| e.to_string())?;
-        for (name, &value) in params {
-            cfg.set(name, value)
-                .map_err(|e| format!("config {component}: {e}"))?;
-        }
-    }
-    let map = scenario.load_map(&resolver).map_err(|e| e.to_string())?;
-    system.load_map(map);
-    system
-        .set_position(
-            scenario.start.pose(),
-            scenario.goal.pose(),
-            scenario.direction.direction(),
-        )
-        .map_err(|e| format!("start and goal: {e}"))?;
+    let mut system = System::from_scenario(&scenario, &resolver).map_err(|e| e.to_string())?;
     system.set_full_field(true);
     let planned = system.preview(5.0).map_err(|e| e.to_string())?;
     for e in system.events() {

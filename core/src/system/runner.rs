@@ -196,52 +196,13 @@ impl ScenarioRun {
     /// `resolver`), start and goal, the timed map updates queued on MapMaintenance; then
     /// activates every component.
     pub fn new(scenario: &Scenario, resolver: &dyn FileResolver) -> crate::Result<Self> {
-        scenario.validate()?;
-        let fail = |what: &str, e: crate::Error| SystemError::Scenario {
-            scenario: scenario.name.clone(),
-            reason: format!("{what}: {e}"),
-        };
-        let mut system = System::new(scenario.rates).map_err(|e| fail("rates", e))?;
-        for (component, params) in &scenario.config {
-            let kind = ComponentKind::from_name(component)?;
-            let cfg = system
-                .config_mut(kind)
-                .map_err(|e| fail("config", e))?;
-            for (name, &value) in params {
-                cfg.set(name, value)
-                    .map_err(|e| fail(&format!("config {component}"), e.into()))?;
-            }
-        }
-        let map = scenario.load_map(resolver).map_err(|e| fail("map", e))?;
-        system.load_map(map);
-        system
-            .set_position(
-                scenario.start.pose(),
-                scenario.goal.pose(),
-                scenario.direction.direction(),
-            )
-            .map_err(|e| fail("start and goal", e))?;
-        let mut pending = Vec::new();
-        for (i, e) in scenario.events.iter().enumerate() {
-            let at = secs_to_ns(e.at());
-            match e {
-                ScenarioEvent::MapUpdate {
-                    boxes,
-                    cells,
-                    value,
-                    ..
-                } => {
-                    let Some(map) = system.map() else {
-                        return Err(SystemError::NoMap { call: "MapUpdate" }.into());
-                    };
-                    let update = Scenario::map_update(map, boxes, cells, *value);
-                    system
-                        .schedule_map_update(at, update)
-                        .map_err(|e| fail(&format!("events[{i}]"), e))?;
-                }
-                other => pending.push((at, other.clone())),
-            }
-        }
+        let mut system = System::from_scenario(scenario, resolver)?;
+        let pending = scenario
+            .events
+            .iter()
+            .filter(|e| !matches!(e, ScenarioEvent::MapUpdate { .. }))
+            .map(|e| (secs_to_ns(e.at()), e.clone()))
+            .collect();
         system.activate_all();
         Ok(Self {
             scenario: scenario.clone(),
@@ -460,6 +421,68 @@ impl ScenarioRun {
             samples: s.telemetry().total(),
             trace_hash: s.telemetry().trace_hash(),
         }
+    }
+}
+
+impl System {
+    /// The system of `scenario`, ready to run: built with its rates, its configuration
+    /// overrides applied, its map loaded (through `resolver`), start and goal set (the robot
+    /// placed at the start), its map updates queued on MapMaintenance. Every component is
+    /// still Inactive; the other timed events are the runner's ([`ScenarioRun`]).
+    pub fn from_scenario(scenario: &Scenario, resolver: &dyn FileResolver) -> crate::Result<Self> {
+        scenario.validate()?;
+        let fail = |what: &str, e: crate::Error| SystemError::Scenario {
+            scenario: scenario.name.clone(),
+            reason: format!("{what}: {e}"),
+        };
+        let mut system = System::new(scenario.rates).map_err(|e| fail("rates", e))?;
+        for (component, params) in &scenario.config {
+            let kind = ComponentKind::from_name(component)?;
+            let cfg = system.config_mut(kind).map_err(|e| fail("config", e))?;
+            for (name, &value) in params {
+                cfg.set(name, value)
+                    .map_err(|e| fail(&format!("config {component}"), e.into()))?;
+            }
+        }
+        let map = scenario.load_map(resolver).map_err(|e| fail("map", e))?;
+        system.load_map(map);
+        system
+            .set_position(
+                scenario.start.pose(),
+                scenario.goal.pose(),
+                scenario.direction.direction(),
+            )
+            .map_err(|e| fail("start and goal", e))?;
+        for (i, e) in scenario.events.iter().enumerate() {
+            if let ScenarioEvent::MapUpdate {
+                boxes,
+                cells,
+                value,
+                at,
+            } = e
+            {
+                let Some(map) = system.map() else {
+                    return Err(SystemError::NoMap { call: "MapUpdate" }.into());
+                };
+                let update = Scenario::map_update(map, boxes, cells, *value);
+                system
+                    .schedule_map_update(secs_to_ns(*at), update)
+                    .map_err(|e| fail(&format!("events[{i}]"), e))?;
+            }
+        }
+        Ok(system)
+    }
+
+    /// Loads the map of `source` through `resolver`; on any error the held map stays and
+    /// nothing changes (SPEC §2: "the previously held map stays").
+    pub fn load_map_from(
+        &mut self,
+        source: &super::scenario::MapSource,
+        resolver: &dyn FileResolver,
+    ) -> crate::Result<()> {
+        let map = source.load(resolver)?;
+        self.load_map(map);
+        Ok(())
     }
 }
 

@@ -146,6 +146,8 @@ pub struct System {
     local_sent_epoch: u64,
     failed_epoch: u64,
     halted: bool,
+    /// While the system works after a tick: that tick's time (events are stamped with it).
+    tick_time_ns: Option<u64>,
     clearance: ClearanceTracker,
     #[cfg(feature = "render")]
     pub(super) scene_buffers: super::scene::SceneBuffers,
@@ -286,6 +288,7 @@ impl System {
             local_sent_epoch: 0,
             failed_epoch: 0,
             halted: false,
+            tick_time_ns: None,
             clearance: ClearanceTracker::new(),
             #[cfg(feature = "render")]
             scene_buffers: Default::default(),
@@ -815,7 +818,7 @@ impl System {
             self.events.pop_front();
         }
         self.events.push_back(SystemEvent {
-            time_ns: self.ec.time_ns(),
+            time_ns: self.tick_time_ns.unwrap_or_else(|| self.ec.time_ns()),
             kind,
         });
         self.event_total += 1;
@@ -952,8 +955,8 @@ impl System {
         let k = self.ec.tick_count();
         let time_ns = self.ec.time_ns();
         self.ec.tick();
-        let driving = self.is_driving();
-        if driving {
+        self.tick_time_ns = Some(time_ns);
+        if self.is_driving() {
             self.track_robot();
         }
         self.pump();
@@ -964,6 +967,7 @@ impl System {
             let s = self.sample(time_ns);
             self.telemetry.record(s);
         }
+        self.tick_time_ns = None;
     }
 
     /// Path length, clearance and trail, every tick the physics runs.

@@ -113,6 +113,41 @@ pub enum MapSource {
     },
 }
 
+impl MapSource {
+    /// Loads the map through `resolver`.
+    pub fn load(&self, resolver: &dyn FileResolver) -> Result<GridMap, crate::Error> {
+        Ok(match self {
+            MapSource::Json { path } => json::load(&text(resolver, path)?)?,
+            MapSource::Ros { yaml, unknown } => {
+                let text = text(resolver, yaml)?;
+                let parsed = ros::parse_yaml(&text)?;
+                let image = resolver.read(&sibling(yaml, &parsed.image))?;
+                let options = ros::RosLoadOptions {
+                    unknown: match unknown {
+                        UnknownSpec::Obstacle => ros::UnknownCells::Obstacle,
+                        UnknownSpec::Free => ros::UnknownCells::Free,
+                    },
+                };
+                ros::load_image(parsed, &image, &options)?.map
+            }
+            MapSource::Movingai {
+                path,
+                grid_size,
+                origin,
+            } => {
+                let m = movingai::load_map(&text(resolver, path)?)?;
+                GridMap::new(
+                    m.width(),
+                    m.height(),
+                    *grid_size,
+                    (origin[0], origin[1]),
+                    m.cells().to_vec(),
+                )?
+            }
+        })
+    }
+}
+
 /// What unknown cells of a ROS map become.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -461,35 +496,7 @@ impl Scenario {
 
     /// Loads the map through `resolver`.
     pub fn load_map(&self, resolver: &dyn FileResolver) -> Result<GridMap, crate::Error> {
-        Ok(match &self.map {
-            MapSource::Json { path } => json::load(&text(resolver, path)?)?,
-            MapSource::Ros { yaml, unknown } => {
-                let text = text(resolver, yaml)?;
-                let parsed = ros::parse_yaml(&text)?;
-                let image = resolver.read(&sibling(yaml, &parsed.image))?;
-                let options = ros::RosLoadOptions {
-                    unknown: match unknown {
-                        UnknownSpec::Obstacle => ros::UnknownCells::Obstacle,
-                        UnknownSpec::Free => ros::UnknownCells::Free,
-                    },
-                };
-                ros::load_image(parsed, &image, &options)?.map
-            }
-            MapSource::Movingai {
-                path,
-                grid_size,
-                origin,
-            } => {
-                let m = movingai::load_map(&text(resolver, path)?)?;
-                GridMap::new(
-                    m.width(),
-                    m.height(),
-                    *grid_size,
-                    (origin[0], origin[1]),
-                    m.cells().to_vec(),
-                )?
-            }
-        })
+        self.map.load(resolver)
     }
 
     /// The `MapUpdate` of a `map_update` event on `map` (cells outside the map are
