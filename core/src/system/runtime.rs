@@ -676,14 +676,19 @@ impl System {
         self.submit_position(start, goal, direction, true)
     }
 
-    /// A new goal: from the robot's current pose (Localization's estimate while driving,
-    /// the placed start otherwise). Checked as [`System::set_position`].
+    /// A new goal from where the robot is: Localization's estimate while driving (the
+    /// planners plan from what the robot believes), the robot's pose otherwise (e.g. after a
+    /// bump and a reset). The robot must have been placed by a [`System::set_position`]
+    /// first. Checked as [`System::set_position`]; on an error nothing changes.
     pub fn set_goal(&mut self, goal: Pose, direction: Direction) -> crate::Result<()> {
+        if self.start.is_none() {
+            return Err(SystemError::NoStart { call: "SetGoal" }.into());
+        }
         if self.is_driving() {
             let start = self.localization().current_pose();
             self.submit_position(start, goal, direction, false)
         } else {
-            let start = self.start.ok_or(SystemError::NoStart { call: "SetGoal" })?;
+            let start = self.robot_pose();
             self.submit_position(start, goal, direction, true)
         }
     }
