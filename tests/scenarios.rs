@@ -6,7 +6,8 @@
 //! `UPDATE_GOLDEN=1 cargo test -p rtnav-tests --test scenarios` rewrites the golden hashes
 //! (natively); look at the runs (`rtnav run … --png`) before you commit new ones.
 //!
-//! Each test also prints the run's real-time factor (simulated time / wall time), measured
+//! Each test also prints the run's real-time factor (simulated time / wall time of the run,
+//! without loading the map), measured
 //! with the host's clock (`Instant` natively, `Date.now()` in Node); it is reported, never
 //! asserted. Build with `--release` for representative figures.
 
@@ -105,26 +106,45 @@ impl Run {
     }
 }
 
+/// Runs per scenario: in release builds three, to print the best real-time factor (the
+/// first run in Node also pays for V8's tiering up); in debug builds one, to stay fast.
+const RUNS: usize = if cfg!(debug_assertions) { 1 } else { 3 };
+
 /// Runs the scenario, checks its expectation (and the rules every run keeps) and its golden
 /// trace hash, prints the summary and the real-time factor.
 fn check((name, json, golden): (&str, &str, &str)) -> Run {
     let scenario = Scenario::from_json(json).unwrap();
-    assert_eq!(scenario.name, name, "the file's name and the scenario's agree");
-    let t0 = now_ms();
-    let mut run = ScenarioRun::new(&scenario, &resolver()).unwrap();
-    run.run_to_end().unwrap();
-    let wall = (now_ms() - t0) * 1e-3;
+    assert_eq!(
+        scenario.name, name,
+        "the file's name and the scenario's agree"
+    );
+    let files = resolver();
+    let mut best = f64::INFINITY;
+    let mut runs = Vec::new();
+    for _ in 0..RUNS {
+        let mut run = ScenarioRun::new(&scenario, &files).unwrap();
+        let t0 = now_ms();
+        run.run_to_end().unwrap();
+        best = best.min((now_ms() - t0) * 1e-3);
+        runs.push(run);
+    }
+    let Some(run) = runs.pop() else {
+        unreachable!("RUNS ≥ 1")
+    };
     let report = run.report();
+    for other in &runs {
+        assert_eq!(other.report(), report, "{name}: every run the same");
+    }
     say!(
         "{name}: {:?} after {:.3} s simulated, {:.3} m, {} local plans, clearance {:.4} m; \
-         wall {:.3} s, real-time factor {:.0}×",
+         wall {:.4} s, real-time factor {:.0}× (best of {RUNS})",
         report.outcome.kind,
         report.sim_time,
         report.path_length,
         report.replans,
         report.min_clearance,
-        wall,
-        report.sim_time / wall
+        best,
+        report.sim_time / best
     );
     if let Err(problems) = report.check(&scenario.expect) {
         panic!("{name}: {problems}\n{report}");
@@ -178,7 +198,11 @@ fn corridor_turn_arrives() {
 fn parking_wall_arrives_parallel_to_the_wall() {
     let r = check(scenario!("parking_wall"));
     // Posture: parallel to the wall (heading 0), within a few degrees.
-    assert!(r.report.heading_error_deg < 2.0, "{}", r.report.heading_error_deg);
+    assert!(
+        r.report.heading_error_deg < 2.0,
+        "{}",
+        r.report.heading_error_deg
+    );
 }
 
 #[cfg_attr(not(target_arch = "wasm32"), test)]
@@ -215,7 +239,10 @@ fn appearing_obstacle_is_avoided_after_a_replan() {
         .collect();
     assert!(!beside.is_empty());
     for p in beside {
-        assert!(p.1 - r.report.body_radius > 4.3, "beside the trolley at {p:?}");
+        assert!(
+            p.1 - r.report.body_radius > 4.3,
+            "beside the trolley at {p:?}"
+        );
     }
 }
 
@@ -225,7 +252,10 @@ fn backward_dock_reverses_in_without_turning() {
     let r = check(scenario!("backward_dock"));
     let samples = r.run.system().telemetry().samples();
     assert_eq!(samples.len() as u64, r.report.samples, "every sample kept");
-    assert!(samples.iter().all(|s| s.v_cmd <= 0.0), "never commanded forward");
+    assert!(
+        samples.iter().all(|s| s.v_cmd <= 0.0),
+        "never commanded forward"
+    );
     assert!(samples.iter().any(|s| s.v_cmd < -0.1), "reversed");
     let facing_out = core::f64::consts::PI;
     let worst = samples
@@ -254,7 +284,11 @@ fn unreachable_goal_fails_to_plan_and_the_robot_stands_still() {
     let start = Pose::new(1.5, 1.5, 0.0);
     assert_eq!(r.report.final_pose, start, "the robot did not move at all");
     let samples = r.run.system().telemetry().samples();
-    assert!(samples.iter().all(|s| s.v == 0.0 && s.w == 0.0 && s.torque == [0.0; 2]));
+    assert!(
+        samples
+            .iter()
+            .all(|s| s.v == 0.0 && s.w == 0.0 && s.torque == [0.0; 2])
+    );
     assert_eq!(r.report.outcome.kind, OutcomeKind::PlanningFailed);
 }
 

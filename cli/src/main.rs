@@ -21,7 +21,11 @@ use rtnav::render::Renderer;
 use rtnav::system::{DirResolver, FileResolver, Scenario, ScenarioRun, System};
 
 #[derive(Debug, Parser)]
-#[command(name = "rtnav", version, about = "Run and draw rtnav scenarios headlessly")]
+#[command(
+    name = "rtnav",
+    version,
+    about = "Run and draw rtnav scenarios headlessly"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -73,11 +77,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once('x')
         .ok_or_else(|| format!("`{s}`: expected WIDTHxHEIGHT, e.g. 1200x800"))?;
-    let n = |t: &str| {
-        t.trim()
-            .parse::<u32>()
-            .map_err(|e| format!("`{s}`: {e}"))
-    };
+    let n = |t: &str| t.trim().parse::<u32>().map_err(|e| format!("`{s}`: {e}"));
     Ok((n(w)?, n(h)?))
 }
 
@@ -92,7 +92,15 @@ fn main() -> ExitCode {
             root,
             events,
             size,
-        } => run(&scenario, png.as_deref(), csv.as_deref(), until, root, events, size),
+        } => run(
+            &scenario,
+            png.as_deref(),
+            csv.as_deref(),
+            until,
+            root,
+            events,
+            size,
+        ),
         Command::Render {
             scenario,
             png,
@@ -114,8 +122,7 @@ type CliResult<T> = Result<T, String>;
 fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
-    let scenario =
-        Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
+    let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
     let root = match root {
         Some(r) => r,
         None => find_root(path, &scenario),
@@ -127,9 +134,8 @@ fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)
 /// scenario's map file exists.
 fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
     let map = match &scenario.map {
-        rtnav::system::MapSource::Json { path } | rtnav::system::MapSource::Movingai { path, .. } => {
-            path.clone()
-        }
+        rtnav::system::MapSource::Json { path }
+        | rtnav::system::MapSource::Movingai { path, .. } => path.clone(),
         rtnav::system::MapSource::Ros { yaml, .. } => yaml.clone(),
     };
     let start = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
@@ -143,9 +149,7 @@ fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
 
 fn write_png(system: &mut System, size: (u32, u32), path: &Path) -> CliResult<()> {
     let mut renderer = Renderer::new(size.0, size.1).map_err(|e| e.to_string())?;
-    let scene = system
-        .scene()
-        .ok_or_else(|| "no map to draw".to_owned())?;
+    let scene = system.scene().ok_or_else(|| "no map to draw".to_owned())?;
     let frame = renderer.render(&scene).map_err(|e| e.to_string())?;
     let bytes = frame.encode_png().map_err(|e| e.to_string())?;
     std::fs::write(path, bytes).map_err(|e| format!("cannot write `{}`: {e}", path.display()))
@@ -219,7 +223,11 @@ fn run(
     let sim = report.sim_time;
     println!(
         "wall time       {wall:.3} s (real-time factor {:.0}×)",
-        if wall > 0.0 { sim / wall } else { f64::INFINITY }
+        if wall > 0.0 {
+            sim / wall
+        } else {
+            f64::INFINITY
+        }
     );
     let expectation = report.check(&scenario.expect);
     match &expectation {

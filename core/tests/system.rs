@@ -12,8 +12,8 @@ use rtnav::motion::angle_diff;
 use rtnav::render::Renderer;
 use rtnav::rtc::LifecycleState;
 use rtnav::system::{
-    ComponentKind, DirResolver, EventKind, MapSource, MemoryResolver, OutcomeKind, Rates,
-    Scenario, ScenarioRun, System, SystemState,
+    ComponentKind, DirResolver, EventKind, MapSource, MemoryResolver, OutcomeKind, Rates, Scenario,
+    ScenarioRun, System, SystemState,
 };
 
 /// The office floor of `corridor_turn` (22 × 16 m, 0.1 m cells).
@@ -31,7 +31,10 @@ const NEAR_GOAL: Pose = Pose::new(12.0, 1.3, 0.0);
 /// A system with the corridor map, `dmin` 0.6 m in both planners, start and goal set.
 fn system(goal: Pose) -> System {
     let mut s = System::new(Rates::default()).unwrap();
-    for kind in [ComponentKind::GlobalPathPlanning, ComponentKind::LocalPathPlanning] {
+    for kind in [
+        ComponentKind::GlobalPathPlanning,
+        ComponentKind::LocalPathPlanning,
+    ] {
         s.config_mut(kind).unwrap().set("dmin", 0.6).unwrap();
     }
     s.load_map(corridor());
@@ -94,7 +97,11 @@ fn bad_start_goal_and_map_input_is_refused_and_changes_nothing() {
     let e = s
         .set_position(START, Pose::new(6.0, 0.5, 0.0), Direction::Forward)
         .unwrap_err();
-    assert!(e.to_string().starts_with("goal (6, 0.5) in cell (60, 5) is too close"), "{e}");
+    assert!(
+        e.to_string()
+            .starts_with("goal (6, 0.5) in cell (60, 5) is too close"),
+        "{e}"
+    );
     // Outside the map.
     let e = s
         .set_position(START, Pose::new(30.0, 1.3, 0.0), Direction::Forward)
@@ -104,9 +111,15 @@ fn bad_start_goal_and_map_input_is_refused_and_changes_nothing() {
 
     // MapUpdate: outside the map, a bad value, mismatched lengths.
     let e = s.set_cells(&[(5, 5, 1), (220, 3, 1)]).unwrap_err();
-    assert!(matches!(e, Error::Map(MapError::CellOutside { x: 220, .. })), "{e}");
+    assert!(
+        matches!(e, Error::Map(MapError::CellOutside { x: 220, .. })),
+        "{e}"
+    );
     let e = s.set_cells(&[(5, 5, 2)]).unwrap_err();
-    assert!(matches!(e, Error::Map(MapError::BadCellValue { value: 2, .. })), "{e}");
+    assert!(
+        matches!(e, Error::Map(MapError::BadCellValue { value: 2, .. })),
+        "{e}"
+    );
     let mut bad = rtnav::components::MapUpdate::from_cells(&[(5, 5, 1)], Default::default());
     bad.num = 3;
     assert!(s.map_update(bad).is_err());
@@ -114,14 +127,26 @@ fn bad_start_goal_and_map_input_is_refused_and_changes_nothing() {
 
     // A bad map file, a missing one: the old map stays.
     let before = s.map().unwrap().clone();
-    let files = MemoryResolver::new()
-        .with("bad.json", &b"{\"width\": 2, \"height\": 1, \"grid_size\": 0.1, \"rows\": [\"#\"]}"[..]);
+    let files = MemoryResolver::new().with(
+        "bad.json",
+        &b"{\"width\": 2, \"height\": 1, \"grid_size\": 0.1, \"rows\": [\"#\"]}"[..],
+    );
     let e = s
-        .load_map_from(&MapSource::Json { path: "bad.json".into() }, &files)
+        .load_map_from(
+            &MapSource::Json {
+                path: "bad.json".into(),
+            },
+            &files,
+        )
         .unwrap_err();
     assert!(e.to_string().starts_with("rtnav JSON map"), "{e}");
     let e = s
-        .load_map_from(&MapSource::Json { path: "missing.json".into() }, &files)
+        .load_map_from(
+            &MapSource::Json {
+                path: "missing.json".into(),
+            },
+            &files,
+        )
         .unwrap_err();
     assert!(matches!(e, Error::System(SystemError::File { .. })), "{e}");
     assert_eq!(s.map(), Some(&before));
@@ -155,14 +180,20 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     assert_eq!(s.activate_all(), SystemState::Active);
     s.run_for(4.0).unwrap();
     let p = s.robot_pose();
-    assert!(p.x > 2.0 && s.physics().physics().body_velocity().0 > 0.3, "{p:?}");
+    assert!(
+        p.x > 2.0 && s.physics().physics().body_velocity().0 > 0.3,
+        "{p:?}"
+    );
     // A crate dropped right in front of the robot, closer than it can brake.
     let front = ((p.x + 0.5) / 0.1) as i64;
     let cells: Vec<_> = (front..front + 3)
         .flat_map(|x| (8..18).map(move |y| (x, y, 1)))
         .collect();
     assert_eq!(s.set_cells(&cells).unwrap(), 30);
-    assert!(s.run_until(2.0, |s| s.state() == SystemState::Error).unwrap());
+    assert!(
+        s.run_until(2.0, |s| s.state() == SystemState::Error)
+            .unwrap()
+    );
 
     let bump = s
         .events()
@@ -174,9 +205,18 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
         .expect("a bump event");
     assert_eq!(bump.who, "rh0");
     assert!(bump.cell.0 >= front && bump.speed > 0.0, "{bump:?}");
-    assert_eq!(s.component_state(ComponentKind::PhysicsSim), LifecycleState::Error);
-    let reason = s.component_info(ComponentKind::PhysicsSim).last_error.unwrap();
-    assert!(reason.starts_with("bump: rh0 bumped into obstacle cell"), "{reason}");
+    assert_eq!(
+        s.component_state(ComponentKind::PhysicsSim),
+        LifecycleState::Error
+    );
+    let reason = s
+        .component_info(ComponentKind::PhysicsSim)
+        .last_error
+        .unwrap();
+    assert!(
+        reason.starts_with("bump: rh0 bumped into obstacle cell"),
+        "{reason}"
+    );
     assert!(s.events().iter().any(|e| matches!(
         &e.kind,
         EventKind::ComponentError { component, callback, reason: r }
@@ -192,7 +232,12 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     // Reset: every component Inactive, the reason gone.
     assert_eq!(s.reset_all(), SystemState::Inactive);
     for info in s.components() {
-        assert_eq!(info.state, LifecycleState::Inactive, "{}", info.instance_name);
+        assert_eq!(
+            info.state,
+            LifecycleState::Inactive,
+            "{}",
+            info.instance_name
+        );
     }
     assert_eq!(s.component_info(ComponentKind::PhysicsSim).last_error, None);
 
@@ -203,7 +248,10 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     assert_eq!(s.activate_all(), SystemState::Active);
     assert!(s.run_until(60.0, arrived).unwrap());
     let p = s.robot_pose();
-    assert!(libm::hypot(p.x - NEAR_GOAL.x, p.y - NEAR_GOAL.y) < 0.1, "{p:?}");
+    assert!(
+        libm::hypot(p.x - NEAR_GOAL.x, p.y - NEAR_GOAL.y) < 0.1,
+        "{p:?}"
+    );
     assert_eq!(s.stats().bumps, 1);
 }
 
@@ -212,10 +260,11 @@ fn while_driving_set_position_is_refused_and_a_new_goal_plans_from_the_pose() {
     let mut s = system(GOAL);
     s.activate_all();
     s.run_for(5.0).unwrap();
-    let e = s
-        .set_position(START, GOAL, Direction::Forward)
-        .unwrap_err();
-    assert!(matches!(e, Error::System(SystemError::Driving { .. })), "{e}");
+    let e = s.set_position(START, GOAL, Direction::Forward).unwrap_err();
+    assert!(
+        matches!(e, Error::System(SystemError::Driving { .. })),
+        "{e}"
+    );
     let here = s.localization().current_pose();
     let plans = s.stats().global_plans;
     s.set_goal(NEAR_GOAL, Direction::Forward).unwrap();
@@ -254,7 +303,10 @@ fn safe_mode_halts_the_robot_and_clear_drops_the_goal() {
     s.set_goal(GOAL, Direction::Forward).unwrap();
     assert!(!s.is_halted());
     s.run_for(3.0).unwrap();
-    assert!(s.physics().physics().body_velocity().0 > 0.1, "driving again");
+    assert!(
+        s.physics().physics().body_velocity().0 > 0.1,
+        "driving again"
+    );
     // Clear: no goal, no path; the robot stops; the map stays.
     s.clear();
     assert_eq!(s.goal(), None);
@@ -283,7 +335,11 @@ fn scenario_events_safe_mode_ends_the_run_halted() {
     let report = run.report();
     assert_eq!(report.outcome.kind, OutcomeKind::Halted);
     report.check(&scenario.expect).unwrap();
-    assert!(report.sim_time > 5.0 && report.sim_time < 8.0, "{}", report.sim_time);
+    assert!(
+        report.sim_time > 5.0 && report.sim_time < 8.0,
+        "{}",
+        report.sim_time
+    );
 }
 
 #[test]
@@ -300,9 +356,18 @@ fn an_injected_fault_puts_one_component_in_error_with_its_reason() {
         &e.kind,
         EventKind::StateChanged { component, to: LifecycleState::Error, .. } if component == "DriveControl0"
     )));
-    assert!(s.activate(ComponentKind::DriveControl).is_err(), "Error → Active is illegal");
-    assert_eq!(s.reset(ComponentKind::DriveControl).unwrap(), LifecycleState::Inactive);
-    assert_eq!(s.activate(ComponentKind::DriveControl).unwrap(), LifecycleState::Active);
+    assert!(
+        s.activate(ComponentKind::DriveControl).is_err(),
+        "Error → Active is illegal"
+    );
+    assert_eq!(
+        s.reset(ComponentKind::DriveControl).unwrap(),
+        LifecycleState::Inactive
+    );
+    assert_eq!(
+        s.activate(ComponentKind::DriveControl).unwrap(),
+        LifecycleState::Active
+    );
     assert_eq!(s.state(), SystemState::Active);
     assert!(s.run_until(90.0, arrived).unwrap());
 }
@@ -310,7 +375,11 @@ fn an_injected_fault_puts_one_component_in_error_with_its_reason() {
 #[test]
 fn components_have_their_rates_states_and_live_configuration() {
     let mut s = system(GOAL);
-    let rates: Vec<_> = s.components().iter().map(|c| (c.instance_name.clone(), c.rate)).collect();
+    let rates: Vec<_> = s
+        .components()
+        .iter()
+        .map(|c| (c.instance_name.clone(), c.rate))
+        .collect();
     assert_eq!(
         rates,
         [
@@ -340,9 +409,14 @@ fn components_have_their_rates_states_and_live_configuration() {
     let r: Rates = serde_json::from_str(r#"{"drive_control": 25}"#).unwrap();
     assert_eq!((r.drive_control, r.physics), (25.0, 1000.0));
     assert!(serde_json::from_str::<Rates>(r#"{"drive": 25}"#).is_err());
-    let mut bad = Rates::default();
-    bad.telemetry = 3.0;
-    assert!(System::new(bad).is_err(), "a telemetry period that is not whole ticks");
+    let bad = Rates {
+        telemetry: 3.0,
+        ..Rates::default()
+    };
+    assert!(
+        System::new(bad).is_err(),
+        "a telemetry period that is not whole ticks"
+    );
 }
 
 #[test]
@@ -351,14 +425,28 @@ fn the_preview_plans_without_moving_and_draws_the_field() {
     s.set_full_field(true);
     assert!(s.preview(5.0).unwrap());
     assert_eq!(s.state(), SystemState::Partial);
-    assert_eq!(s.component_state(ComponentKind::PhysicsSim), LifecycleState::Inactive);
+    assert_eq!(
+        s.component_state(ComponentKind::PhysicsSim),
+        LifecycleState::Inactive
+    );
     assert_eq!(s.robot_pose(), START);
     assert!(s.local_path_planning().potential_field().is_some());
     assert!(s.local_path_planning().local_plan().is_some());
-    let kinds: Vec<_> = s.events().iter().map(|e| std::mem::discriminant(&e.kind)).collect();
+    let kinds: Vec<_> = s
+        .events()
+        .iter()
+        .map(|e| std::mem::discriminant(&e.kind))
+        .collect();
     for want in [
-        EventKind::GlobalPlan { cells: 0, length: 0.0 },
-        EventKind::LocalPlanSent { cells: 0, control_points: 0, replanned: false },
+        EventKind::GlobalPlan {
+            cells: 0,
+            length: 0.0,
+        },
+        EventKind::LocalPlanSent {
+            cells: 0,
+            control_points: 0,
+            replanned: false,
+        },
     ] {
         assert!(kinds.contains(&std::mem::discriminant(&want)));
     }
@@ -388,11 +476,21 @@ fn telemetry_is_bounded_and_the_same_run_gives_the_same_trace() {
     assert_eq!(b.telemetry().samples().len() as u64, b.telemetry().total());
     assert_eq!(a.telemetry().last(), b.telemetry().last());
     // 50 Hz: one sample every 20 ms, from t = 0.
-    let t: Vec<u64> = b.telemetry().samples().iter().take(3).map(|s| s.time_ns).collect();
+    let t: Vec<u64> = b
+        .telemetry()
+        .samples()
+        .iter()
+        .take(3)
+        .map(|s| s.time_ns)
+        .collect();
     assert_eq!(t, [0, 20_000_000, 40_000_000]);
     let csv = b.telemetry().to_csv();
     assert_eq!(csv.lines().count() as u64, 1 + b.telemetry().total());
     let events = |s: &System| s.events().iter().map(|e| e.to_string()).collect::<Vec<_>>();
     assert_eq!(events(&a), events(&b));
-    assert!(events(&a).iter().any(|e| e.contains("arrived at (11.99")), "{:?}", events(&a));
+    assert!(
+        events(&a).iter().any(|e| e.contains("arrived at (11.99")),
+        "{:?}",
+        events(&a)
+    );
 }

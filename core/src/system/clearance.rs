@@ -4,8 +4,18 @@
 
 use crate::map::GridMap;
 
-/// The distance from `(x, y)` to the nearest obstacle square, exact; 0 inside an obstacle
-/// cell or outside the map.
+/// The squared distance from `(x, y)` to the square with lower-left corner `(lx, ly)` and
+/// side `g`.
+fn square_d2(x: f64, y: f64, lx: f64, ly: f64, g: f64) -> f64 {
+    let dx = x - x.clamp(lx, lx + g);
+    let dy = y - y.clamp(ly, ly + g);
+    dx * dx + dy * dy
+}
+
+/// The distance from `(x, y)` to the nearest obstacle square, exact: the square root of the
+/// smallest squared distance, or the distance to the map's edge if that is smaller; 0 inside
+/// an obstacle cell or outside the map. (One square root per call: `libm::sqrt` is a
+/// software routine on wasm32.)
 ///
 /// Cells are visited in rings of growing Chebyshev distance `k` around the point's cell; a
 /// cell of ring `k ≥ 1` is at least `(k − 1)·g` away, so the search stops once that bound
@@ -22,24 +32,23 @@ pub fn clearance(map: &GridMap, x: f64, y: f64) -> f64 {
         return 0.0;
     }
     // The region outside the map: the distance to the map's edges.
-    let mut best = border_distance(map, x, y);
-    let square = |i: i64, j: i64| {
-        let (lx, ly) = (ox + i as f64 * g, oy + j as f64 * g);
-        let dx = x - x.clamp(lx, lx + g);
-        let dy = y - y.clamp(ly, ly + g);
-        libm::hypot(dx, dy)
-    };
+    let border = border_distance(map, x, y);
+    let mut best_d2 = f64::INFINITY;
     let mut k: i64 = 1;
-    while ((k - 1) as f64) * g < best {
+    loop {
+        let reach = (k - 1) as f64 * g;
+        if reach >= border || reach * reach >= best_d2 {
+            break;
+        }
         let (x0, x1, y0, y1) = (cx - k, cx + k, cy - k, cy + k);
         if x0 < 0 && y0 < 0 && x1 >= w && y1 >= h {
             break;
         }
         let mut visit = |i: i64, j: i64| {
             if (0..w).contains(&i) && (0..h).contains(&j) && map.is_obstacle(i, j) {
-                let d = square(i, j);
-                if d < best {
-                    best = d;
+                let d2 = square_d2(x, y, ox + i as f64 * g, oy + j as f64 * g, g);
+                if d2 < best_d2 {
+                    best_d2 = d2;
                 }
             }
         };
@@ -53,7 +62,7 @@ pub fn clearance(map: &GridMap, x: f64, y: f64) -> f64 {
         }
         k += 1;
     }
-    best
+    border.min(libm::sqrt(best_d2))
 }
 
 /// A lower bound of [`clearance`] from the distance transform alone (one look-up): the
@@ -64,10 +73,26 @@ pub fn clearance_lower_bound(map: &GridMap, x: f64, y: f64) -> f64 {
         Some(c) => {
             let (cx, cy) = map.cell_center(c);
             map.obstacle_distance(c)
-                - libm::hypot(x - cx, y - cy)
+                - libm::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy))
                 - map.grid_size() * core::f64::consts::FRAC_1_SQRT_2
         }
         None => 0.0,
+    }
+}
+
+/// Whether [`clearance_lower_bound`] is below `value`, without a square root: with
+/// `a = d(c) − g/√2 − value`, the bound `d(c) − |p − c| − g/√2 < value` holds when `a < 0` or
+/// `a² < |p − c|²`.
+pub fn could_be_below(map: &GridMap, x: f64, y: f64, value: f64) -> bool {
+    match map.world_to_cell(x, y) {
+        Some(c) => {
+            let (cx, cy) = map.cell_center(c);
+            let a = map.obstacle_distance(c)
+                - map.grid_size() * core::f64::consts::FRAC_1_SQRT_2
+                - value;
+            a < 0.0 || a * a < (x - cx) * (x - cx) + (y - cy) * (y - cy)
+        }
+        None => true,
     }
 }
 
@@ -96,9 +121,9 @@ impl ClearanceTracker {
     /// The clearance of `(x, y)` on `map`; `key` must change whenever the map's cells do.
     pub fn clearance(&mut self, map: &GridMap, key: u64, x: f64, y: f64) -> f64 {
         let g = map.grid_size();
-        let near = self
-            .anchor
-            .is_some_and(|(ax, ay)| libm::hypot(x - ax, y - ay) <= MARGIN / 2.0);
+        let near = self.anchor.is_some_and(|(ax, ay)| {
+            (x - ax) * (x - ax) + (y - ay) * (y - ay) <= (MARGIN / 2.0) * (MARGIN / 2.0)
+        });
         if !near || key != self.key {
             let c = clearance(map, x, y);
             self.collect(map, x, y, c + MARGIN);
@@ -112,14 +137,14 @@ impl ClearanceTracker {
         if map.is_obstacle(cx, cy) {
             return 0.0;
         }
-        let mut best = border_distance(map, x, y);
+        let mut best_d2 = f64::INFINITY;
         for &(lx, ly) in &self.squares {
-            let d = libm::hypot(x - x.clamp(lx, lx + g), y - y.clamp(ly, ly + g));
-            if d < best {
-                best = d;
+            let d2 = square_d2(x, y, lx, ly, g);
+            if d2 < best_d2 {
+                best_d2 = d2;
             }
         }
-        best
+        border_distance(map, x, y).min(libm::sqrt(best_d2))
     }
 
     /// Collects every in-map obstacle square within `radius` of `(x, y)`.
@@ -138,8 +163,7 @@ impl ClearanceTracker {
             for i in x0.max(0)..=x1.min(w - 1) {
                 if map.is_obstacle(i, j) {
                     let (lx, ly) = (ox + i as f64 * g, oy + j as f64 * g);
-                    let d = libm::hypot(x - x.clamp(lx, lx + g), y - y.clamp(ly, ly + g));
-                    if d <= radius {
+                    if square_d2(x, y, lx, ly, g) <= radius * radius {
                         self.squares.push((lx, ly));
                     }
                 }
@@ -168,21 +192,21 @@ mod tests {
         let g = map.grid_size();
         let (ox, oy) = map.origin();
         let (w, h) = (map.width() as f64, map.height() as f64);
-        let mut best = (x - ox)
+        let border = (x - ox)
             .min(ox + w * g - x)
             .min(y - oy)
             .min(oy + h * g - y)
             .max(0.0);
+        let mut best_d2 = f64::INFINITY;
         for j in 0..map.height() as i64 {
             for i in 0..map.width() as i64 {
                 if map.is_obstacle(i, j) {
                     let (lx, ly) = (ox + i as f64 * g, oy + j as f64 * g);
-                    let d = libm::hypot(x - x.clamp(lx, lx + g), y - y.clamp(ly, ly + g));
-                    best = best.min(d);
+                    best_d2 = best_d2.min(square_d2(x, y, lx, ly, g));
                 }
             }
         }
-        best
+        border.min(libm::sqrt(best_d2))
     }
 
     #[test]
@@ -198,7 +222,14 @@ mod tests {
                 let (x, y) = (0.003 + i as f64 * 0.05, 0.007 + j as f64 * 0.05);
                 let c = clearance(&map, x, y);
                 assert_eq!(c, brute(&map, x, y), "({x}, {y})");
-                assert!(clearance_lower_bound(&map, x, y) <= c + 1e-12);
+                let lb = clearance_lower_bound(&map, x, y);
+                assert!(lb <= c + 1e-12);
+                for v in [lb - 1e-9, lb + 1e-9, c, f64::INFINITY] {
+                    assert_eq!(
+                        could_be_below(&map, x, y, v),
+                        lb < v || (lb - v).abs() < 1e-12
+                    );
+                }
                 k += 1;
             }
         }
@@ -221,7 +252,11 @@ mod tests {
         for k in 0..4000 {
             let s = k as f64 * 0.001;
             let (x, y) = (0.2 + s * 0.9, 0.3 + 2.4 * libm::sin(s));
-            assert_eq!(t.clearance(&map, 1, x, y), clearance(&map, x, y), "({x}, {y})");
+            assert_eq!(
+                t.clearance(&map, 1, x, y),
+                clearance(&map, x, y),
+                "({x}, {y})"
+            );
         }
     }
 }

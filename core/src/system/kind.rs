@@ -8,9 +8,7 @@ use crate::errors::SystemError;
 
 /// One of the system's components (SPEC §0). The order of [`ComponentKind::ALL`] is the
 /// attachment order, which is the order they run in a tick (see `crate::system`).
-#[derive(
-    Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize,
-)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum ComponentKind {
     /// Holds the loaded map; sends `SetMap`.
     MapBuilder,

@@ -56,16 +56,14 @@ mod scenario;
 mod scene;
 mod telemetry;
 
-pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound};
+pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound, could_be_below};
 pub use events::{EventKind, SystemEvent};
 pub use kind::ComponentKind;
 pub use rates::Rates;
 pub use runner::{
     ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, run_scenario,
 };
-pub use runtime::{
-    ComponentInfo, EVENT_CAPACITY, RunStats, System, SystemState, TRAIL_CAPACITY,
-};
+pub use runtime::{ComponentInfo, EVENT_CAPACITY, RunStats, System, SystemState, TRAIL_CAPACITY};
 #[cfg(not(target_arch = "wasm32"))]
 pub use scenario::DirResolver;
 pub use scenario::{

@@ -90,13 +90,13 @@ impl ScenarioReport {
             ));
         }
         if expect.outcome == OutcomeKind::Arrived {
-            if !(self.position_error <= self.grid_size) {
+            if self.position_error.is_nan() || self.position_error > self.grid_size {
                 problems.push(format!(
                     "{:.4} m from the goal, more than one cell ({} m)",
                     self.position_error, self.grid_size
                 ));
             }
-            if !(self.heading_error_deg <= ARRIVAL_HEADING_DEG) {
+            if self.heading_error_deg.is_nan() || self.heading_error_deg > ARRIVAL_HEADING_DEG {
                 problems.push(format!(
                     "heading {:.2}° off the goal's, more than {ARRIVAL_HEADING_DEG}°",
                     self.heading_error_deg
@@ -346,7 +346,12 @@ impl ScenarioRun {
         if self.system.state() == SystemState::Error {
             let reason = ComponentKind::ALL
                 .into_iter()
-                .find_map(|k| self.system.component_info(k).last_error.map(|e| format!("{k}: {e}")))
+                .find_map(|k| {
+                    self.system
+                        .component_info(k)
+                        .last_error
+                        .map(|e| format!("{k}: {e}"))
+                })
                 .unwrap_or_default();
             self.outcome = Some(Outcome {
                 kind: OutcomeKind::ComponentError,

@@ -7,14 +7,14 @@ use core::fmt;
 
 use serde::Serialize;
 
-use super::clearance::{ClearanceTracker, clearance_lower_bound};
+use super::clearance::{ClearanceTracker, could_be_below};
 use super::events::{EventKind, SystemEvent};
 use super::kind::ComponentKind;
 use super::rates::Rates;
 use super::telemetry::{Telemetry, TelemetrySample};
 use crate::components::{
-    DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder,
-    MapMaintenance, MapUpdate, MotorControl, PhysicsSim, SetMapMessage,
+    DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
+    MapUpdate, MotorControl, PhysicsSim, SetMapMessage,
 };
 use crate::errors::{LifecycleError, SystemError};
 use crate::interfaces::{Direction, GlobalPathCourse, GridPath, PlanningFailure, Pose};
@@ -22,8 +22,8 @@ use crate::local::FieldExtent;
 use crate::map::{Cell, GridMap};
 use crate::motion::{BumpReport, ModelFrame, PhysicsParams, angle_diff};
 use crate::rtc::{
-    Component, ComponentId, ConfigAccess, ExecutionContext, InPort, LifecycleEvent,
-    LifecycleState, Time,
+    Component, ComponentId, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState,
+    Time,
 };
 
 /// How many events are kept (the oldest are dropped beyond this).
@@ -171,7 +171,7 @@ fn period_ticks(base: u64, hz: f64, what: &str) -> Result<u64, LifecycleError> {
         return Err(bad(format!("{what}: it must be positive and finite")));
     }
     let p = 1e9 / hz;
-    if p.fract() != 0.0 || p < 1.0 || (p as u64) % base != 0 {
+    if p.fract() != 0.0 || p < 1.0 || !(p as u64).is_multiple_of(base) {
         return Err(bad(format!(
             "{what}: its period is not a whole number of base ticks ({base} ns)"
         )));
@@ -437,7 +437,9 @@ impl System {
                 )
             }
             ComponentKind::MotorControl => self.motor_control().status().to_string(),
-            ComponentKind::Localization => format!("{:?}", self.localization().config().params().mode()),
+            ComponentKind::Localization => {
+                format!("{:?}", self.localization().config().params().mode())
+            }
             ComponentKind::GlobalPathPlanning => match self.global_path_planning().last_error() {
                 Some(e) => format!("failed: {e}"),
                 None => match self.global_path_planning().path_length() {
@@ -700,21 +702,36 @@ impl System {
         direction: Direction,
         place: bool,
     ) -> crate::Result<()> {
-        let map = self
-            .map()
-            .cloned()
-            .ok_or(SystemError::NoMap { call: "SetPosition" })?;
+        let map = self.map().cloned().ok_or(SystemError::NoMap {
+            call: "SetPosition",
+        })?;
         let dir = direction.to_short();
         {
             // LocalPathPlanning's checks decide; on an error nothing has changed.
             let local = self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning);
-            local.set_position(start.x, start.y, start.theta, goal.x, goal.y, goal.theta, dir)?;
+            local.set_position(
+                start.x,
+                start.y,
+                start.theta,
+                goal.x,
+                goal.y,
+                goal.theta,
+                dir,
+            )?;
             // A fresh start for the new goal: the old path and what was sent are dropped
             // (the consumers get an empty path, then the new one), so the new path reaches
             // DriveControl even when it equals the last one sent.
             local.clear();
             local.set_grid_map(map);
-            local.set_position(start.x, start.y, start.theta, goal.x, goal.y, goal.theta, dir)?;
+            local.set_position(
+                start.x,
+                start.y,
+                start.theta,
+                goal.x,
+                goal.y,
+                goal.theta,
+                dir,
+            )?;
         }
         if place {
             self.get_mut::<PhysicsSim>(ComponentKind::PhysicsSim)
@@ -965,10 +982,10 @@ impl System {
             self.track_robot();
         }
         self.pump();
-        if k % self.drive_period_ticks == 0 {
+        if k.is_multiple_of(self.drive_period_ticks) {
             self.check_arrival();
         }
-        if k % self.telemetry_period_ticks == 0 {
+        if k.is_multiple_of(self.telemetry_period_ticks) {
             let s = self.sample(time_ns);
             self.telemetry.record(s);
         }
@@ -979,13 +996,16 @@ impl System {
     fn track_robot(&mut self) {
         let pose = self.robot_pose();
         if let Some(last) = self.last_pose {
-            self.stats.path_length += libm::hypot(pose.x - last.x, pose.y - last.y);
+            let (dx, dy) = (pose.x - last.x, pose.y - last.y);
+            if dx != 0.0 || dy != 0.0 {
+                self.stats.path_length += libm::sqrt(dx * dx + dy * dy);
+            }
         }
         self.last_pose = Some(pose);
         let key = self.map_key();
         let mut tracker = core::mem::take(&mut self.clearance);
         if let Some(map) = self.physics().physics().map()
-            && clearance_lower_bound(map, pose.x, pose.y) < self.stats.min_clearance
+            && could_be_below(map, pose.x, pose.y, self.stats.min_clearance)
         {
             let c = tracker.clearance(map, key, pose.x, pose.y);
             if c < self.stats.min_clearance {
@@ -994,7 +1014,8 @@ impl System {
         }
         self.clearance = tracker;
         let far = self.trail.last().is_none_or(|&(x, y)| {
-            libm::hypot(pose.x - x, pose.y - y) >= TRAIL_SPACING
+            (pose.x - x) * (pose.x - x) + (pose.y - y) * (pose.y - y)
+                >= TRAIL_SPACING * TRAIL_SPACING
         });
         if far {
             if self.trail.len() == TRAIL_CAPACITY {

@@ -176,7 +176,11 @@ impl PoseSpec {
     /// As a [`Pose`] (radians). The conversion multiplies by `π/180` (no transcendental
     /// function: the same bits everywhere).
     pub fn pose(&self) -> Pose {
-        Pose::new(self.x, self.y, self.heading_deg * (core::f64::consts::PI / 180.0))
+        Pose::new(
+            self.x,
+            self.y,
+            self.heading_deg * (core::f64::consts::PI / 180.0),
+        )
     }
 }
 
@@ -451,19 +455,24 @@ impl Scenario {
                         return Err(self.err(format!("events[{i}].value = {value} must be 0 or 1")));
                     }
                     if boxes.is_empty() && cells.is_empty() {
-                        return Err(self.err(format!("events[{i}]: a map_update needs boxes or cells")));
+                        return Err(
+                            self.err(format!("events[{i}]: a map_update needs boxes or cells"))
+                        );
                     }
                     if boxes
                         .iter()
                         .any(|b| !(b.x.iter().chain(&b.y).all(|v| v.is_finite())))
                     {
-                        return Err(self.err(format!("events[{i}]: a box has a number that is not finite")));
+                        return Err(self.err(format!(
+                            "events[{i}]: a box has a number that is not finite"
+                        )));
                     }
                 }
                 ScenarioEvent::Goal { goal, .. } => {
-                    if !(goal.x.is_finite() && goal.y.is_finite() && goal.heading_deg.is_finite())
-                    {
-                        return Err(self.err(format!("events[{i}].goal has a number that is not finite")));
+                    if !(goal.x.is_finite() && goal.y.is_finite() && goal.heading_deg.is_finite()) {
+                        return Err(
+                            self.err(format!("events[{i}].goal has a number that is not finite"))
+                        );
                     }
                 }
                 ScenarioEvent::SafeMode { .. } | ScenarioEvent::Clear { .. } => {}
@@ -473,7 +482,9 @@ impl Scenario {
             super::ComponentKind::from_name(component)
                 .map_err(|e| self.err(format!("config: {e}")))?;
         }
-        if let MapSource::Movingai { grid_size, origin, .. } = &self.map
+        if let MapSource::Movingai {
+            grid_size, origin, ..
+        } = &self.map
             && !(grid_size.is_finite() && *grid_size > 0.0 && origin.iter().all(|v| v.is_finite()))
         {
             return Err(self.err("map: grid_size must be positive and finite, origin finite"));
@@ -577,16 +588,31 @@ mod tests {
         assert_eq!(s.direction, DirectionSpec::Forward);
         assert_eq!(s.rates, Rates::default());
         let typo = ok.replace("\"lesson\"", "\"lessons\"");
-        assert!(Scenario::from_json(&typo).unwrap_err().to_string().contains("unknown field"));
+        assert!(
+            Scenario::from_json(&typo)
+                .unwrap_err()
+                .to_string()
+                .contains("unknown field")
+        );
         let late = ok.replace(
             "\"time_limit\": 10",
             "\"time_limit\": 10, \"events\": [{\"at\": 11, \"type\": \"safe_mode\"}]",
         );
-        assert!(Scenario::from_json(&late).unwrap_err().to_string().contains("events[0].at"));
+        assert!(
+            Scenario::from_json(&late)
+                .unwrap_err()
+                .to_string()
+                .contains("events[0].at")
+        );
         let who = ok.replace(
             "\"time_limit\": 10",
             "\"time_limit\": 10, \"config\": {\"Planner\": {\"dmin\": 1}}",
         );
-        assert!(Scenario::from_json(&who).unwrap_err().to_string().contains("no component named `Planner`"));
+        assert!(
+            Scenario::from_json(&who)
+                .unwrap_err()
+                .to_string()
+                .contains("no component named `Planner`")
+        );
     }
 }

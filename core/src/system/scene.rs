@@ -90,7 +90,9 @@ impl System {
         match field {
             Some(f) if buffers.field_key != Some(key) || buffers.potential.is_empty() => {
                 buffers.potential.clear();
-                buffers.potential.extend(f.cells().iter().map(|c| c.potential));
+                buffers
+                    .potential
+                    .extend(f.cells().iter().map(|c| c.potential));
                 buffers.state.clear();
                 buffers.state.extend(
                     f.state_codes()

@@ -173,7 +173,9 @@ impl Telemetry {
     /// number 0): for a consumer that reads the history piece by piece.
     pub fn since(&self, seq: u64) -> impl Iterator<Item = &TelemetrySample> {
         let first_kept = self.total - self.samples.len() as u64;
-        let skip = seq.saturating_sub(first_kept).min(self.samples.len() as u64) as usize;
+        let skip = seq
+            .saturating_sub(first_kept)
+            .min(self.samples.len() as u64) as usize;
         self.samples.iter().skip(skip)
     }
 
@@ -243,12 +245,21 @@ mod tests {
         for k in 0..3 {
             u.record(sample(k));
         }
-        assert_eq!(t.trace_hash(), u.trace_hash(), "dropping samples keeps the hash");
+        assert_eq!(
+            t.trace_hash(),
+            u.trace_hash(),
+            "dropping samples keeps the hash"
+        );
         u.record(sample(3));
         assert_ne!(t.trace_hash(), u.trace_hash());
         let csv = t.to_csv();
         assert_eq!(csv.lines().count(), 3);
-        assert!(csv.lines().nth(1).unwrap().starts_with("0.000000001,1,2,0.5,"));
+        assert!(
+            csv.lines()
+                .nth(1)
+                .unwrap()
+                .starts_with("0.000000001,1,2,0.5,")
+        );
         assert!(csv.ends_with(",NaN\n"));
         assert_eq!(
             TelemetrySample::CSV_HEADER.split(',').count(),
