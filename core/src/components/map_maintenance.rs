@@ -261,8 +261,14 @@ mod tests {
         let one = MapUpdate::from_cells(&[(1, 1, 1)], Time::default());
         assert!(m.map_update(one.clone()).is_err(), "no map yet");
         m.set_map(map());
-        assert!(m.map_update(MapUpdate::from_cells(&[(4, 0, 1)], Time::default())).is_err());
-        assert!(m.map_update(MapUpdate::from_cells(&[(0, 0, 2)], Time::default())).is_err());
+        assert!(
+            m.map_update(MapUpdate::from_cells(&[(4, 0, 1)], Time::default()))
+                .is_err()
+        );
+        assert!(
+            m.map_update(MapUpdate::from_cells(&[(0, 0, 2)], Time::default()))
+                .is_err()
+        );
         let mut bad = one.clone();
         bad.num = 2;
         assert!(m.schedule(0, bad).is_err());
@@ -276,19 +282,31 @@ mod tests {
             period_ns: 100_000_000,
             index: ms,
         };
-        m.schedule(300_000_000, MapUpdate::from_cells(&[(2, 2, 1)], Time::default()))
-            .unwrap();
-        m.schedule(200_000_000, MapUpdate::from_cells(&[(3, 2, 1)], Time::default()))
-            .unwrap();
-        m.schedule(200_000_000, MapUpdate::from_cells(&[(3, 1, 1)], Time::default()))
-            .unwrap();
+        m.schedule(
+            300_000_000,
+            MapUpdate::from_cells(&[(2, 2, 1)], Time::default()),
+        )
+        .unwrap();
+        m.schedule(
+            200_000_000,
+            MapUpdate::from_cells(&[(3, 2, 1)], Time::default()),
+        )
+        .unwrap();
+        m.schedule(
+            200_000_000,
+            MapUpdate::from_cells(&[(3, 1, 1)], Time::default()),
+        )
+        .unwrap();
         assert_eq!((m.pending(), m.next_due_ns()), (3, Some(200_000_000)));
         m.on_execute(&tick(100)).unwrap();
         assert!(!rx.is_new());
         m.on_execute(&tick(200)).unwrap();
         // Both due updates in one message, in queue order.
         let last = rx.read().unwrap();
-        assert_eq!((last.x.clone(), last.y.clone(), last.num), (vec![3, 3], vec![2, 1], 2));
+        assert_eq!(
+            (last.x.clone(), last.y.clone(), last.num),
+            (vec![3, 3], vec![2, 1], 2)
+        );
         assert_eq!(last.tm, Time::from_nanos(200_000_000));
         assert!(m.map().unwrap().is_obstacle(3, 2) && m.map().unwrap().is_obstacle(3, 1));
         assert_eq!(m.pending(), 1);
