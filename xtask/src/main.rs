@@ -1,2 +1,92 @@
-//! `cargo xtask`: the steps cargo alone cannot do.
-fn main() {}
+//! `cargo xtask`: the steps cargo alone cannot do (matklad's cargo-xtask pattern).
+//!
+//! Nothing to install but cargo: every command installs the tools it needs when they are
+//! missing (the wasm target, `wasm-bindgen-cli` at the version pinned in the root
+//! `Cargo.toml`, `wasm-pack`, Debian's `chromium`, the e2e test's npm
+//! packages) and is safe to run again. Nothing is downloaded from GitHub.
+//!
+//! ```text
+//! cargo xtask demo [--port N]     build the wasm and serve web/ (default http://127.0.0.1:8080/)
+//! cargo xtask build-wasm [--dev]  build the wasm into web/pkg
+//! cargo xtask serve [--port N]    serve web/ as it is
+//! cargo xtask test                every check CI runs, with a summary
+//! ```
+
+mod serve;
+mod test;
+mod tools;
+mod wasm;
+
+use std::process::ExitCode;
+
+/// Errors are reported to the user as text; nothing here recovers from them.
+type Result<T = ()> = std::result::Result<T, Box<dyn std::error::Error>>;
+
+/// The port `demo` and `serve` use unless told otherwise.
+const DEFAULT_PORT: u16 = 8080;
+
+const USAGE: &str = "\
+usage: cargo xtask <command>
+
+commands:
+  demo [--port N]      build the wasm and serve the page (default port 8080)
+  build-wasm [--dev]   build rtnav-wasm into web/pkg (release unless --dev)
+  serve [--port N]     serve web/ without building
+  test                 cargo test, clippy (native and wasm32), rustfmt, the wasm tests
+                       under Node and the browser end-to-end tests
+  help                 this text";
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match dispatch(&args) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("xtask: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn dispatch(args: &[String]) -> Result<ExitCode> {
+    let (command, rest) = match args.split_first() {
+        Some((c, rest)) => (c.as_str(), rest),
+        None => ("help", &[][..]),
+    };
+    match command {
+        "demo" => {
+            let port = port_option(rest)?;
+            wasm::build(wasm::Profile::Release)?;
+            serve::serve_forever(port)?;
+        }
+        "build-wasm" => {
+            let profile = match rest {
+                [] => wasm::Profile::Release,
+                [flag] if flag == "--dev" => wasm::Profile::Dev,
+                _ => return Err(format!("build-wasm: unexpected arguments {rest:?}").into()),
+            };
+            wasm::build(profile)?;
+        }
+        "serve" => serve::serve_forever(port_option(rest)?)?,
+        "test" => {
+            if !rest.is_empty() {
+                return Err(format!("test: unexpected arguments {rest:?}").into());
+            }
+            return Ok(test::run_all());
+        }
+        "help" | "--help" | "-h" => println!("{USAGE}"),
+        other => return Err(format!("unknown command `{other}`\n\n{USAGE}").into()),
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `[]` or `["--port", N]` (also `--port=N`).
+fn port_option(rest: &[String]) -> Result<u16> {
+    let text = match rest {
+        [] => return Ok(DEFAULT_PORT),
+        [flag, value] if flag == "--port" => value.as_str(),
+        [flag] if flag.starts_with("--port=") => &flag["--port=".len()..],
+        _ => return Err(format!("unexpected arguments {rest:?} (expected --port N)").into()),
+    };
+    text.parse()
+        .map_err(|_| format!("--port: `{text}` is not a port number").into())
+}

@@ -17,6 +17,10 @@ pub use physics_sim::PhysicsSim;
 pub mod local_path_planning;
 pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams};
 
+// Demo component for the browser page until the robot system exists (tooling issue).
+pub mod heartbeat;
+pub use heartbeat::{Heartbeat, HeartbeatParams};
+
 // --- system: MapBuilder / MapMaintenance (SPEC §5) ---
 mod map_builder;
 mod map_maintenance;

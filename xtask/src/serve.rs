@@ -1,0 +1,196 @@
+//! A static file server for `web/` (oxhttp): `cargo xtask serve`, the end of
+//! `cargo xtask demo`, and the e2e tests' server on a free port.
+//!
+//! It serves files only: `GET`, no directory listings, nothing outside `web/`, no caching (a
+//! rebuilt wasm is picked up by a reload), and `.wasm` as `application/wasm` so browsers can
+//! compile it while it streams.
+//!
+//! Why oxhttp, not tiny_http: tiny_http 0.12 hands each connection to a thread pool that can
+//! queue a connection behind busy keep-alive connections when a browser opens several at once;
+//! a page then waits forever for some of its modules (seen here with Chromium, on a fresh server,
+//! about one load in three). oxhttp gives every connection its own thread.
+
+use std::net::{Ipv4Addr, SocketAddr, TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use oxhttp::Server;
+use oxhttp::model::header::{CACHE_CONTROL, CONTENT_TYPE};
+use oxhttp::model::{Body, Method, Request, Response, StatusCode};
+
+use crate::Result;
+use crate::tools;
+
+/// The directory served.
+pub fn web_root() -> PathBuf {
+    tools::repo_root().join("web")
+}
+
+/// Serves `web/` on `127.0.0.1:port` until the process is stopped.
+pub fn serve_forever(port: u16) -> Result {
+    let root = web_root();
+    let address = SocketAddr::from((Ipv4Addr::LOCALHOST, port));
+    let server = Server::new(move |request| respond(&root, request))
+        .bind(address)
+        .with_global_timeout(Duration::from_secs(60))
+        .with_max_concurrent_connections(64)
+        .spawn()
+        .map_err(|e| {
+            format!(
+                "cannot listen on {address}: {e} (is another server running? \
+                 try `cargo xtask serve --port N`)"
+            )
+        })?;
+    println!(
+        "\nrtnav demo: http://{address}/  (serving {}; Ctrl-C to stop)\n",
+        web_root().display()
+    );
+    server.join()?;
+    Ok(())
+}
+
+/// `cargo xtask serve` on a free port, as a child process (so it can be stopped), for the
+/// e2e tests. Dropping it stops the server.
+#[derive(Debug)]
+pub struct Background {
+    child: Child,
+    /// `http://127.0.0.1:PORT/`.
+    pub url: String,
+}
+
+impl Background {
+    /// Starts serving `web/` on a port the OS picks and waits until it accepts connections.
+    pub fn start() -> Result<Self> {
+        let port = TcpListener::bind((Ipv4Addr::LOCALHOST, 0))?
+            .local_addr()?
+            .port();
+        let child = Command::new(std::env::current_exe()?)
+            .args(["serve", "--port", &port.to_string()])
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .spawn()?;
+        let mut server = Self {
+            child,
+            url: format!("http://127.0.0.1:{port}/"),
+        };
+        let deadline = Instant::now() + Duration::from_secs(20);
+        while TcpStream::connect((Ipv4Addr::LOCALHOST, port)).is_err() {
+            if let Some(status) = server.child.try_wait()? {
+                return Err(format!("the server exited at start-up ({status})").into());
+            }
+            if Instant::now() > deadline {
+                return Err(format!("the server did not start listening on port {port}").into());
+            }
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        Ok(server)
+    }
+}
+
+impl Drop for Background {
+    /// Stops the server.
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// The file for a request's URL path, if it names one under `root`: `/` and directories mean
+/// their `index.html`; `..`, hidden names and anything odd are refused.
+fn resolve(root: &Path, path: &str) -> Option<PathBuf> {
+    let mut file = root.to_path_buf();
+    for segment in path.split('/').filter(|s| !s.is_empty()) {
+        let plain = segment
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'));
+        if !plain || segment.starts_with('.') {
+            return None;
+        }
+        file.push(segment);
+    }
+    if file.is_dir() {
+        file.push("index.html");
+    }
+    file.is_file().then_some(file)
+}
+
+/// The `Content-Type` for a file name.
+fn content_type(path: &Path) -> &'static str {
+    match path.extension().and_then(|e| e.to_str()).unwrap_or("") {
+        "html" => "text/html; charset=utf-8",
+        "js" | "mjs" => "text/javascript; charset=utf-8",
+        "wasm" => "application/wasm",
+        "css" => "text/css; charset=utf-8",
+        "json" | "map" => "application/json",
+        "png" => "image/png",
+        "svg" => "image/svg+xml",
+        "ico" => "image/x-icon",
+        "txt" | "md" | "conf" | "ts" => "text/plain; charset=utf-8",
+        _ => "application/octet-stream",
+    }
+}
+
+fn status(code: StatusCode, text: &'static str) -> Response<Body> {
+    let mut response = Response::new(Body::from(text));
+    *response.status_mut() = code;
+    response
+}
+
+fn respond(root: &Path, request: &mut Request<Body>) -> Response<Body> {
+    let path = request.uri().path();
+    if request.method() != Method::GET {
+        eprintln!("serve: 405 {} {path}", request.method());
+        return status(StatusCode::METHOD_NOT_ALLOWED, "only GET");
+    }
+    let Some(file) = resolve(root, path) else {
+        eprintln!("serve: 404 GET {path}");
+        return status(StatusCode::NOT_FOUND, "not found");
+    };
+    match std::fs::read(&file) {
+        Ok(bytes) => Response::builder()
+            .header(CONTENT_TYPE, content_type(&file))
+            .header(CACHE_CONTROL, "no-store")
+            .body(Body::from(bytes))
+            .unwrap_or_else(|_| status(StatusCode::INTERNAL_SERVER_ERROR, "bad header")),
+        Err(e) => {
+            eprintln!("serve: 500 GET {path}: {e}");
+            status(StatusCode::INTERNAL_SERVER_ERROR, "cannot read the file")
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn resolves_only_plain_paths_under_the_root() {
+        let root = web_root();
+        let cases: &[(&str, Option<&str>)] = &[
+            ("/", Some("index.html")),
+            ("/index.html", Some("index.html")),
+            ("/js/loop.js", Some("js/loop.js")),
+            ("/../Cargo.toml", None),
+            ("/%2e%2e/Cargo.toml", None),
+            ("/.hidden", None),
+            ("/no-such-file.js", None),
+        ];
+        for (url, expect) in cases {
+            assert_eq!(resolve(&root, url), expect.map(|f| root.join(f)), "{url}");
+        }
+    }
+
+    #[test]
+    fn wasm_and_js_have_their_mime_types() {
+        let cases = [
+            ("a.wasm", "application/wasm"),
+            ("pkg/rtnav_wasm.js", "text/javascript; charset=utf-8"),
+            ("index.html", "text/html; charset=utf-8"),
+            ("x.bin", "application/octet-stream"),
+        ];
+        for (file, expect) in cases {
+            assert_eq!(content_type(Path::new(file)), expect, "{file}");
+        }
+    }
+}

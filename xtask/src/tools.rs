@@ -1,0 +1,224 @@
+//! Running commands, and installing the tools they need when they are missing.
+//!
+//! Every `ensure_*` function checks first and installs only what is missing or has the wrong
+//! version, so running a command twice does no work the second time. Sources: rustup, crates.io
+//! (`cargo install`), Debian (`apt-get`) and npm; never GitHub.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use crate::Result;
+
+/// `wasm-pack`'s version, pinned so every machine builds the same way.
+const WASM_PACK_VERSION: &str = "0.15.1";
+/// The oldest Node that `playwright-core` (tests/e2e) supports.
+const MIN_NODE_MAJOR: u32 = 20;
+/// The browser the end-to-end tests drive (Debian's `chromium`).
+pub const CHROMIUM: &str = "/usr/bin/chromium";
+
+/// The repository's root (the parent of `xtask/`).
+pub fn repo_root() -> PathBuf {
+    let xtask = Path::new(env!("CARGO_MANIFEST_DIR"));
+    xtask.parent().unwrap_or(xtask).to_path_buf()
+}
+
+/// Where `cargo install` puts binaries: `$CARGO_HOME/bin`, by default `~/.cargo/bin`.
+fn cargo_bin_dir() -> Option<PathBuf> {
+    let home = std::env::var_os("CARGO_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cargo")))?;
+    Some(home.join("bin"))
+}
+
+/// `PATH` with cargo's bin directory in front, so tools just installed are found (by us and
+/// by `wasm-pack`, which looks for `wasm-bindgen` on `PATH`).
+fn search_path() -> std::ffi::OsString {
+    let mut dirs: Vec<PathBuf> = cargo_bin_dir().into_iter().collect();
+    if let Some(path) = std::env::var_os("PATH") {
+        dirs.extend(std::env::split_paths(&path));
+    }
+    std::env::join_paths(dirs).unwrap_or_default()
+}
+
+/// A command run from the repository root with [`search_path`].
+pub fn cmd(program: &str) -> Command {
+    let mut c = Command::new(program);
+    c.current_dir(repo_root()).env("PATH", search_path());
+    c
+}
+
+/// `cargo`: the one running us (from `$CARGO`) if known.
+pub fn cargo() -> Command {
+    let program = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
+    cmd(&program)
+}
+
+fn describe(c: &Command) -> String {
+    let mut text = c.get_program().to_string_lossy().into_owned();
+    for a in c.get_args() {
+        text.push(' ');
+        text.push_str(&a.to_string_lossy());
+    }
+    text
+}
+
+/// Runs `c`, echoing it first; an error if it cannot start or exits non-zero.
+pub fn run(c: &mut Command) -> Result {
+    let text = describe(c);
+    println!("$ {text}");
+    let status = c
+        .status()
+        .map_err(|e| format!("cannot run `{text}`: {e}"))?;
+    if status.success() {
+        Ok(())
+    } else {
+        Err(format!("`{text}` failed ({status})").into())
+    }
+}
+
+/// The trimmed stdout of `program args` if it runs and succeeds (quietly; for version checks).
+fn output_of(program: &str, args: &[&str]) -> Option<String> {
+    let out = cmd(program)
+        .args(args)
+        .stdin(Stdio::null())
+        .stderr(Stdio::null())
+        .output()
+        .ok()?;
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_owned())
+}
+
+/// The `wasm-bindgen` version pinned (`= x.y.z`) in the root `Cargo.toml`. The CLI must have
+/// exactly this version: it and the library agree on a private ABI.
+pub fn pinned_wasm_bindgen() -> Result<String> {
+    let manifest = std::fs::read_to_string(repo_root().join("Cargo.toml"))?;
+    manifest
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix("wasm-bindgen"))
+        .filter_map(|l| l.trim_start().strip_prefix('='))
+        .filter_map(|l| l.trim().strip_prefix("\"="))
+        .find_map(|l| l.split('"').next().map(str::to_owned))
+        .ok_or_else(|| "no `wasm-bindgen = \"=x.y.z\"` pin in the root Cargo.toml".into())
+}
+
+/// `rustup target add wasm32-unknown-unknown` unless it is installed.
+pub fn ensure_wasm_target() -> Result {
+    let installed = output_of("rustup", &["target", "list", "--installed"]).unwrap_or_default();
+    if installed
+        .lines()
+        .any(|t| t.trim() == "wasm32-unknown-unknown")
+    {
+        return Ok(());
+    }
+    run(cmd("rustup").args(["target", "add", "wasm32-unknown-unknown"]))
+}
+
+/// `cargo install` of `krate` at exactly `version` unless `binary --version` already says
+/// `version`. `--locked` first; if the registry lacks a version the published lockfile names
+/// (a mirror can), once more without it: the crate's own version stays exact either way.
+fn ensure_cargo_tool(binary: &str, krate: &str, version: &str) -> Result {
+    let have = output_of(binary, &["--version"]);
+    if have
+        .as_deref()
+        .and_then(|v| v.split_whitespace().nth(1))
+        .is_some_and(|v| v == version)
+    {
+        return Ok(());
+    }
+    match &have {
+        Some(v) => println!("xtask: found `{v}`, need {krate} {version}: installing"),
+        None => println!("xtask: `{binary}` not found: installing {krate} {version}"),
+    }
+    let install = |locked: bool| {
+        let mut c = cargo();
+        c.args([
+            "install",
+            krate,
+            "--version",
+            &format!("={version}"),
+            "--force",
+        ]);
+        if locked {
+            c.arg("--locked");
+        }
+        run(&mut c)
+    };
+    install(true).or_else(|e| {
+        println!(
+            "xtask: `cargo install --locked` failed ({e}); retrying without --locked \
+             (dependencies resolved from the registry, {krate} itself still ={version})"
+        );
+        install(false)
+    })
+}
+
+/// `wasm-bindgen`, `wasm-bindgen-test-runner` etc. at the version pinned in `Cargo.toml`.
+pub fn ensure_wasm_bindgen_cli() -> Result {
+    ensure_cargo_tool("wasm-bindgen", "wasm-bindgen-cli", &pinned_wasm_bindgen()?)
+}
+
+/// `wasm-pack` at [`WASM_PACK_VERSION`].
+pub fn ensure_wasm_pack() -> Result {
+    ensure_cargo_tool("wasm-pack", "wasm-pack", WASM_PACK_VERSION)
+}
+
+static APT_UPDATED: AtomicBool = AtomicBool::new(false);
+
+/// `apt-get`, through `sudo` unless we are root, waiting for another apt to finish.
+fn apt_get(args: &[&str]) -> Result {
+    let root = output_of("id", &["-u"]).as_deref() == Some("0");
+    let mut c = if root { cmd("apt-get") } else { cmd("sudo") };
+    if !root {
+        c.arg("apt-get");
+    }
+    c.env("DEBIAN_FRONTEND", "noninteractive")
+        .args(["-o", "DPkg::Lock::Timeout=600"])
+        .args(args);
+    run(&mut c)
+}
+
+/// Installs Debian `packages` unless `file` exists (`apt-get update` once per run first).
+pub fn ensure_apt(file: &str, packages: &[&str]) -> Result {
+    if Path::new(file).exists() {
+        return Ok(());
+    }
+    println!("xtask: {file} not found: installing {}", packages.join(" "));
+    if !APT_UPDATED.swap(true, Ordering::SeqCst) {
+        apt_get(&["update"])?;
+    }
+    let mut args = vec!["install", "-y", "--no-install-recommends"];
+    args.extend_from_slice(packages);
+    apt_get(&args)?;
+    if Path::new(file).exists() {
+        Ok(())
+    } else {
+        Err(format!(
+            "{file} still missing after installing {}",
+            packages.join(" ")
+        )
+        .into())
+    }
+}
+
+/// Debian's `chromium` and a font for the page's text.
+pub fn ensure_chromium() -> Result {
+    ensure_apt(CHROMIUM, &["chromium", "fonts-liberation"])
+}
+
+/// Checks that `node` and `npm` are there and Node is new enough.
+pub fn ensure_node() -> Result {
+    let version = output_of("node", &["--version"]).ok_or("`node` not found: install Node.js")?;
+    let major = version
+        .trim_start_matches('v')
+        .split('.')
+        .next()
+        .and_then(|m| m.parse::<u32>().ok())
+        .ok_or_else(|| format!("cannot read Node's version `{version}`"))?;
+    if major < MIN_NODE_MAJOR {
+        return Err(format!("Node {version} is too old: need {MIN_NODE_MAJOR} or newer").into());
+    }
+    output_of("npm", &["--version"]).ok_or("`npm` not found: install npm")?;
+    Ok(())
+}
