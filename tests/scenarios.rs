@@ -22,6 +22,8 @@ const WILLOW_YAML: &str =
     "../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.yaml";
 const WILLOW_PGM: &str =
     "../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.pgm";
+/// The MovingAI arena, read in place.
+const ARENA: &str = "../shared/data/movingai/dao/arena.map";
 
 macro_rules! map {
     ($name:literal) => {
@@ -47,6 +49,10 @@ fn resolver() -> MemoryResolver {
             &include_bytes!(
                 "../../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.yaml"
             )[..],
+        ),
+        (
+            ARENA,
+            &include_bytes!("../../shared/data/movingai/dao/arena.map")[..],
         ),
         (
             WILLOW_PGM,
@@ -297,4 +303,12 @@ fn unreachable_goal_fails_to_plan_and_the_robot_stands_still() {
 fn willow_garage_drives_through_the_building() {
     let r = check(scenario!("willow_garage"));
     assert!(r.report.path_length > 35.0, "{}", r.report.path_length);
+}
+
+#[cfg_attr(not(target_arch = "wasm32"), test)]
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+fn arena_from_movingai_arrives() {
+    let r = check(scenario!("arena"));
+    let map = r.run.system().map().unwrap();
+    assert_eq!((map.width(), map.height(), map.grid_size()), (49, 49, 0.5));
 }
