@@ -44,6 +44,39 @@
 //! [`Rates`]: physics, MotorControl, Localization 1 kHz; DriveControl 50 Hz; local and
 //! global planning 10 Hz; MapBuilder and MapMaintenance 10 Hz; telemetry 50 Hz. The base
 //! tick is the highest rate (1 ms by default).
+//!
+//! # The GUI-facing API (what InventGUI did)
+//!
+//! - Map: [`System::load_map`], [`System::load_map_from`] (a file through a
+//!   [`FileResolver`]; a bad file leaves the old map), [`System::map_update`] /
+//!   [`System::set_cells`] (checked completely, atomic), [`System::schedule_map_update`].
+//! - Goals: [`System::set_position`] (`SetPosition`: places the robot at the start in the
+//!   physics and Localization; refused while driving), [`System::set_goal`] (a new goal from
+//!   where the robot is, also while driving), [`System::clear`], [`System::safe_mode`].
+//!   Bad input (NaN, outside the map, within `dmin` of an obstacle) is refused with
+//!   LocalPathPlanning's error and changes nothing.
+//! - Lifecycle: activate / deactivate / reset of all components ([`System::activate_all`],
+//!   [`System::deactivate_all`], [`System::reset_all`]) or one ([`System::activate`], …),
+//!   [`System::inject_fault`], [`System::set_rate`]; [`System::state`] and
+//!   [`System::component_info`] (state, last error, rate, status); each component's
+//!   parameters as `&mut dyn ConfigAccess` ([`System::config_mut`]).
+//! - Running: [`System::step`] (base ticks), [`System::run_for`], [`System::run_until`];
+//!   [`System::preview`] plans without driving (the page's first frame, `rtnav render`).
+//! - Output: [`System::events`] ([`SystemEvent`], stamped with the simulated time of the tick
+//!   that caused them), [`System::telemetry`] ([`TelemetrySample`] at the telemetry rate, a
+//!   bounded history, and the SHA-256 trace hash over every sample), [`System::stats`]
+//!   (path length, exact minimum clearance, plans, bumps), `System::scene` (feature
+//!   `render`: the renderer's `Scene` of the current state).
+//!
+//! A bump fails the physics' `on_execute` with the bump report as the reason: the physics
+//! goes to Error (the robot stands still), MotorControl gets `Stop`, the system's state is
+//! Error; [`System::reset_all`] brings every component back to Inactive.
+//!
+//! # Scenarios
+//!
+//! [`Scenario`] files (`fixtures/scenarios/*.json`) give the map, start and goal,
+//! configuration, rates, timed events and the expected outcome; [`ScenarioRun`] /
+//! [`run_scenario`] drive the system to the outcome and report ([`ScenarioReport`]).
 
 mod clearance;
 mod events;

@@ -406,8 +406,8 @@ impl Scenario {
     /// Reads a scenario from JSON (unknown keys are errors) and checks it.
     pub fn from_json(text: &str) -> Result<Self, SystemError> {
         let s: Self = serde_json::from_str(text).map_err(|e| SystemError::Scenario {
-            scenario: "(file)".to_owned(),
-            reason: format!("line {}: {e}", e.line()),
+            scenario: "(JSON)".to_owned(),
+            reason: e.to_string(),
         })?;
         s.validate()?;
         Ok(s)
