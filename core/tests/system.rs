@@ -494,3 +494,35 @@ fn telemetry_is_bounded_and_the_same_run_gives_the_same_trace() {
         events(&a)
     );
 }
+
+#[test]
+fn scenario_events_a_new_goal_while_driving_is_reached() {
+    let json = r#"{
+        "name": "retarget", "description": "", "lesson": "",
+        "map": { "format": "json", "path": "fixtures/maps/scenarios/corridor_turn.json" },
+        "start": { "x": 1.5, "y": 1.3 }, "goal": { "x": 17.1, "y": 14.5, "heading_deg": 90 },
+        "config": { "GlobalPathPlanning": { "dmin": 0.6 }, "LocalPathPlanning": { "dmin": 0.6 } },
+        "events": [ { "at": 5.0, "type": "goal", "goal": { "x": 12.0, "y": 1.3, "heading_deg": 180 } } ],
+        "time_limit": 60.0,
+        "expect": { "outcome": "arrived" }
+    }"#;
+    let scenario = Scenario::from_json(json).unwrap();
+    let mut run = ScenarioRun::new(&scenario, &DirResolver::new("..")).unwrap();
+    run.run_to_end().unwrap();
+    let report = run.report();
+    report.check(&scenario.expect).unwrap();
+    assert_eq!(
+        report.goal,
+        Some(Pose::new(12.0, 1.3, core::f64::consts::PI))
+    );
+    assert_eq!(report.global_plans, 2);
+    // It did not stop to take the new goal: no sample below 0.1 m/s between 5 and 6 s.
+    let slow = run
+        .system()
+        .telemetry()
+        .samples()
+        .iter()
+        .filter(|s| (5_000_000_000..6_000_000_000).contains(&s.time_ns))
+        .any(|s| s.v < 0.1);
+    assert!(!slow, "kept driving through the new goal");
+}

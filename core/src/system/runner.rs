@@ -68,6 +68,8 @@ pub struct ScenarioReport {
     pub samples: u64,
     /// SHA-256 over every telemetry sample.
     pub trace_hash: String,
+    /// The scenario's expectation checked ([`ScenarioReport::check`]): every problem found.
+    pub expectation: Result<(), String>,
 }
 
 impl ScenarioReport {
@@ -404,7 +406,7 @@ impl ScenarioRun {
                 angle_diff(pose.theta, g.theta).abs().to_degrees(),
             )
         });
-        ScenarioReport {
+        let mut report = ScenarioReport {
             name: self.scenario.name.clone(),
             outcome: self.outcome.clone().unwrap_or(Outcome {
                 kind: OutcomeKind::TimeLimit,
@@ -425,7 +427,10 @@ impl ScenarioRun {
             grid_size: s.map().map_or(f64::NAN, |m| m.grid_size()),
             samples: s.telemetry().total(),
             trace_hash: s.telemetry().trace_hash(),
-        }
+            expectation: Ok(()),
+        };
+        report.expectation = report.check(&self.scenario.expect);
+        report
     }
 }
 
@@ -491,7 +496,8 @@ impl System {
     }
 }
 
-/// Runs `scenario` to its outcome (files through `resolver`) and reports.
+/// Runs `scenario` to its outcome (files through `resolver`) and reports, the expectation
+/// checked ([`ScenarioReport::expectation`]).
 pub fn run_scenario(
     scenario: &Scenario,
     resolver: &dyn FileResolver,

@@ -718,20 +718,23 @@ impl System {
                 goal.theta,
                 dir,
             )?;
-            // A fresh start for the new goal: the old path and what was sent are dropped
-            // (the consumers get an empty path, then the new one), so the new path reaches
-            // DriveControl even when it equals the last one sent.
-            local.clear();
-            local.set_grid_map(map);
-            local.set_position(
-                start.x,
-                start.y,
-                start.theta,
-                goal.x,
-                goal.y,
-                goal.theta,
-                dir,
-            )?;
+            if place {
+                // The robot is placed anew: the old path and what was sent are dropped (the
+                // consumers get an empty path, then the new one), so the new path reaches
+                // DriveControl even when it equals the last one sent. (While driving the
+                // robot has moved, so the new path differs anyway, and it does not stop.)
+                local.clear();
+                local.set_grid_map(map);
+                local.set_position(
+                    start.x,
+                    start.y,
+                    start.theta,
+                    goal.x,
+                    goal.y,
+                    goal.theta,
+                    dir,
+                )?;
+            }
         }
         if place {
             self.get_mut::<PhysicsSim>(ComponentKind::PhysicsSim)
