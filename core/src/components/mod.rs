@@ -21,6 +21,10 @@ pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanni
 pub mod heartbeat;
 pub use heartbeat::{Heartbeat, HeartbeatParams};
 
+// --- maps: GlobalPathPlanning ---
+mod global_path_planning;
+pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams};
+
 // --- system: MapBuilder / MapMaintenance (SPEC §5) ---
 mod map_builder;
 mod map_maintenance;
