@@ -162,7 +162,7 @@ impl AStar {
         for (y, row) in map.distances().chunks_exact(w).enumerate() {
             let dst = &mut cells[(y + 1) * stride + 1..(y + 1) * stride + 1 + w];
             for (c, &d) in dst.iter_mut().zip(row) {
-                if d > dmin {
+                if !crate::map::within_dmin(d, dmin) {
                     *c = PASSABLE;
                     passable_count += 1;
                 }

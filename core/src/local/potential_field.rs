@@ -239,7 +239,7 @@ impl PotentialField {
         self.grid_size = map.grid_size();
         let dmin = request.dmin;
         for (s, &d) in self.state.iter_mut().zip(map.distances()) {
-            *s = if d <= dmin {
+            *s = if crate::map::within_dmin(d, dmin) {
                 CellState::Impassable as u8
             } else {
                 CellState::Unreached as u8

@@ -9,6 +9,19 @@ use crate::rtc::Time;
 /// error instead of an out-of-memory.
 pub const MAX_CELLS: usize = 16 * 1024 * 1024;
 
+/// How far above `dmin` an obstacle distance may be and still count as "within `dmin`":
+/// 1 nm. Distances are `g·√k` in floating point, so a cell exactly `dmin` away can come out
+/// a few ulps above it (3 × 0.1 = 0.30000000000000004); without this margin such a cell is
+/// passable with a repulsion `1/(d − dmin)²` of about 10³².
+pub const DMIN_TOLERANCE: f64 = 1e-9;
+
+/// Whether an obstacle distance lies within `dmin` (SPEC §2, §3 step 4: "cells with obstacle
+/// distance ≤ `dmin` are impassable"), with [`DMIN_TOLERANCE`]. Every planner, the renderer's
+/// dmin zone and the start/goal checks use this one predicate.
+pub fn within_dmin(distance: f64, dmin: f64) -> bool {
+    distance <= dmin + DMIN_TOLERANCE
+}
+
 /// A cell index `(x, y)`: x is the column (fastest in `MapData`), y the row, (0, 0) the
 /// lower-left cell.
 pub type Cell = (usize, usize);
@@ -225,7 +238,7 @@ impl GridMap {
     /// (000 §5.2.4.2, §5.2.4.4): equivalently its obstacle distance exceeds `dmin`. False
     /// for a cell outside the map.
     pub fn is_clear(&self, cell: Cell, dmin: f64) -> bool {
-        self.obstacle_distance(cell) > dmin
+        !within_dmin(self.obstacle_distance(cell), dmin)
     }
 
     /// `MapUpdate(X, Y, value, num, sec, nsec)` (000 §3.2.2.1 (5), SPEC §2 Decision): all

@@ -6,4 +6,4 @@ pub mod formats;
 mod grid_map;
 
 pub use distance::euclidean_distance_squared;
-pub use grid_map::{Cell, GridMap, MAX_CELLS};
+pub use grid_map::{Cell, DMIN_TOLERANCE, GridMap, MAX_CELLS, within_dmin};

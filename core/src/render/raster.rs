@@ -255,7 +255,7 @@ impl Base {
             .map(|(&c, &d)| {
                 if c == 1 && layers.occupancy {
                     obstacle
-                } else if layers.dmin_zone && d <= dmin {
+                } else if layers.dmin_zone && crate::map::within_dmin(d, dmin) {
                     zone
                 } else {
                     free
