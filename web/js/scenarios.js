@@ -41,6 +41,9 @@ export function createScenarios(dom, app) {
   function loaded(what) {
     app.emit('loaded');
     showAbout();
+    // A new system: a fresh log, starting with what it did while loading.
+    app.log.clear();
+    app.log.update();
     app.log.page(what, 'info');
   }
 

@@ -20,6 +20,9 @@ export function createEventLog(root, app) {
   }
 
   return {
+    clear() {
+      list.replaceChildren();
+    },
     update() {
       const events = JSON.parse(app.guard.call(() => demo.take_events()) ?? '[]');
       for (const e of events) add(e);
