@@ -18,7 +18,7 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
 use rtnav::render::{Layers, Renderer};
 use rtnav::rtc::{LifecycleState, Time};
-use rtnav::system::{ComponentKind, Rates, Scenario, ScenarioEvent, System};
+use rtnav::system::{ComponentKind, MapSource, Rates, Scenario, ScenarioEvent, System};
 use wasm_bindgen::prelude::*;
 
 use crate::files::Files;
@@ -96,41 +96,23 @@ impl Inner {
 
     // ------------------------------------------------------------------ loading
 
-    /// Builds the system of a scenario (rates, configuration, map, start and goal, as the
-    /// scenario runner does, but without activating the robot) and previews its plan. On an
-    /// error the current system stays.
+    /// Builds the system of a scenario ([`System::from_scenario`]: rates, configuration,
+    /// map, start and goal; nothing activated) and previews its plan. The scenario's timed
+    /// events wait for the drive to start. On an error the current system stays.
     pub(crate) fn load_scenario(&mut self, json: &str, files: &Files) -> Msg<()> {
         let scenario = Scenario::from_json(json).map_err(msg)?;
-        let resolver = files.resolver();
-        let fail = |what: &str, e: rtnav::Error| format!("scenario `{}`: {what}: {e}", scenario.name);
-        let mut system = System::new(scenario.rates).map_err(|e| fail("rates", e))?;
-        for (component, params) in &scenario.config {
-            let kind = ComponentKind::from_name(component).map_err(msg)?;
-            let cfg = system.config_mut(kind).map_err(|e| fail("config", e))?;
-            for (name, &value) in params {
-                cfg.set(name, value)
-                    .map_err(|e| fail(&format!("config {component}"), e.into()))?;
-            }
-        }
-        let map = scenario
-            .load_map(&resolver)
-            .map_err(|e| fail("map", e))?;
+        let timeless = Scenario {
+            events: Vec::new(),
+            ..scenario.clone()
+        };
+        let mut system = System::from_scenario(&timeless, &files.resolver()).map_err(msg)?;
         system.set_full_field(true);
-        system.load_map(map);
-        system
-            .set_position(
-                scenario.start.pose(),
-                scenario.goal.pose(),
-                scenario.direction.direction(),
-            )
-            .map_err(|e| fail("start and goal", e))?;
         system
             .preview(PREVIEW_SECONDS)
-            .map_err(|e| fail("preview", e))?;
+            .map_err(|e| format!("scenario `{}`: preview: {e}", scenario.name))?;
         self.map_name = match &scenario.map {
-            rtnav::system::MapSource::Json { path }
-            | rtnav::system::MapSource::Movingai { path, .. } => path.clone(),
-            rtnav::system::MapSource::Ros { yaml, .. } => yaml.clone(),
+            MapSource::Json { path } | MapSource::Movingai { path, .. } => path.clone(),
+            MapSource::Ros { yaml, .. } => yaml.clone(),
         };
         self.script = scenario
             .events
@@ -353,7 +335,9 @@ impl Inner {
     }
 
     pub(crate) fn set_goal(&mut self, goal: Pose, backward: bool) -> Msg<()> {
-        self.system.set_goal(goal, direction(backward)).map_err(msg)?;
+        self.system
+            .set_goal(goal, direction(backward))
+            .map_err(msg)?;
         self.after_goal()
     }
 
@@ -496,7 +480,10 @@ impl Inner {
             local_plans: stats.local_plans,
             planning_failures: stats.planning_failures,
             bumps: stats.bumps,
-            min_clearance: stats.min_clearance.is_finite().then_some(stats.min_clearance),
+            min_clearance: stats
+                .min_clearance
+                .is_finite()
+                .then_some(stats.min_clearance),
         }
     }
 
@@ -577,7 +564,11 @@ impl Demo {
     /// to `movingai_grid_size` metres per cell) or a ROS YAML with its image — into a fresh
     /// system with no start or goal. On an error (a bad file, named in the message) the
     /// current map stays.
-    pub fn load_map_files(&mut self, files: &Files, movingai_grid_size: f64) -> Result<(), JsError> {
+    pub fn load_map_files(
+        &mut self,
+        files: &Files,
+        movingai_grid_size: f64,
+    ) -> Result<(), JsError> {
         self.0.load_map_files(files, movingai_grid_size).map_err(js)
     }
 
@@ -712,7 +703,13 @@ impl Demo {
 
     /// A new goal from where the robot is. A refused goal is an error; the previous goal
     /// and its path stay.
-    pub fn set_goal(&mut self, x: f64, y: f64, theta_deg: f64, backward: bool) -> Result<(), JsError> {
+    pub fn set_goal(
+        &mut self,
+        x: f64,
+        y: f64,
+        theta_deg: f64,
+        backward: bool,
+    ) -> Result<(), JsError> {
         self.0.set_goal(pose(x, y, theta_deg), backward).map_err(js)
     }
 

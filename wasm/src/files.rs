@@ -4,11 +4,11 @@
 use std::collections::BTreeMap;
 
 use rtnav::map::GridMap;
-use rtnav::map::formats::{json, movingai, ros};
-use rtnav::system::MemoryResolver;
+use rtnav::map::formats::ros;
+use rtnav::system::{MapSource, MemoryResolver, UnknownSpec};
 use wasm_bindgen::prelude::*;
 
-use crate::{Msg, msg as js_error};
+use crate::Msg;
 
 /// Named files in memory: paths as a scenario writes them (`fixtures/maps/…`), or the
 /// names of the files a user picked.
@@ -78,10 +78,6 @@ fn kind(name: &str, bytes: &[u8]) -> Option<Kind> {
     }
 }
 
-fn text<'a>(name: &str, bytes: &'a [u8]) -> Msg<&'a str> {
-    std::str::from_utf8(bytes).map_err(|e| js_error(format!("`{name}` is not text: {e}")))
-}
-
 impl Files {
     /// A resolver over these files, for a scenario.
     pub(crate) fn resolver(&self) -> MemoryResolver {
@@ -93,11 +89,21 @@ impl Files {
     }
 
     /// Loads the map the user picked: one rtnav JSON file, one MovingAI `.map` (scaled to
-    /// `movingai_grid_size` metres per cell), or a ROS YAML with the image it names.
-    /// Every problem is an error naming the file; nothing is loaded then.
+    /// `movingai_grid_size` metres per cell), or a ROS YAML with the image it names — by the
+    /// core's loaders ([`MapSource::load`]). Every problem is an error naming the file;
+    /// nothing is loaded then. Returns the file's name and the map.
     pub(crate) fn load_map(&self, movingai_grid_size: f64) -> Msg<(String, GridMap)> {
+        let (name, source) = self.map_source(movingai_grid_size)?;
+        let map = source
+            .load(&self.resolver())
+            .map_err(|e| format!("`{name}`: {e}"))?;
+        Ok((name, map))
+    }
+
+    /// Which file is the map and how to read it.
+    fn map_source(&self, movingai_grid_size: f64) -> Msg<(String, MapSource)> {
         if self.0.is_empty() {
-            return Err(js_error(format!("no file chosen: {EXPECTED}")));
+            return Err(format!("no file chosen: {EXPECTED}"));
         }
         let kinds: Vec<(&str, &[u8], Option<Kind>)> = self
             .0
@@ -105,59 +111,53 @@ impl Files {
             .map(|(n, b)| (n.as_str(), b.as_slice(), kind(n, b)))
             .collect();
         if let Some((name, ..)) = kinds.iter().find(|k| k.2.is_none()) {
-            return Err(js_error(format!(
-                "`{name}` is not a map file I know: {EXPECTED}"
-            )));
+            return Err(format!("`{name}` is not a map file I know: {EXPECTED}"));
         }
-        let fail = |name: &str, e: rtnav::errors::MapError| js_error(format!("`{name}`: {e}"));
         if let Some(&(name, bytes, _)) = kinds.iter().find(|k| k.2 == Some(Kind::RosYaml)) {
-            let yaml = ros::parse_yaml(text(name, bytes)?).map_err(|e| fail(name, e))?;
-            let wanted = yaml.image.rsplit('/').next().unwrap_or(&yaml.image).to_owned();
-            let image = kinds
-                .iter()
-                .find(|k| k.0.rsplit('/').next() == Some(wanted.as_str()))
-                .ok_or_else(|| {
-                    js_error(format!(
-                        "`{name}` names the image `{wanted}`: pick it together with the YAML file"
-                    ))
-                })?;
-            let map = ros::load_image(yaml, image.1, &ros::RosLoadOptions::default())
-                .map_err(|e| fail(image.0, e))?
-                .map;
-            return Ok((name.to_owned(), map));
+            // Checked here for a clearer message than "cannot read": the image must have
+            // been picked too.
+            let text =
+                std::str::from_utf8(bytes).map_err(|e| format!("`{name}` is not text: {e}"))?;
+            let yaml = ros::parse_yaml(text).map_err(|e| format!("`{name}`: {e}"))?;
+            if !self.0.contains_key(&yaml.image) {
+                return Err(format!(
+                    "`{name}` names the image `{}`: pick it together with the YAML file",
+                    yaml.image
+                ));
+            }
+            return Ok((
+                name.to_owned(),
+                MapSource::Ros {
+                    yaml: name.to_owned(),
+                    unknown: UnknownSpec::default(),
+                },
+            ));
         }
-        if let [(name, bytes, Some(k))] = kinds.as_slice() {
-            let map = match k {
-                Kind::Json => json::load(text(name, bytes)?).map_err(|e| fail(name, e))?,
-                Kind::MovingAi => {
-                    if !(movingai_grid_size.is_finite() && movingai_grid_size > 0.0) {
-                        return Err(js_error(format!(
-                            "MovingAI cell size {movingai_grid_size} m must be positive"
-                        )));
-                    }
-                    let m = movingai::load_map(text(name, bytes)?).map_err(|e| fail(name, e))?;
-                    GridMap::new(
-                        m.width(),
-                        m.height(),
-                        movingai_grid_size,
-                        (0.0, 0.0),
-                        m.cells().to_vec(),
-                    )
-                    .map_err(|e| fail(name, e))?
+        let [(name, _, Some(k))] = kinds.as_slice() else {
+            return Err(format!("{} files chosen: {EXPECTED}", self.0.len()));
+        };
+        let path = (*name).to_owned();
+        let source = match k {
+            Kind::Json => MapSource::Json { path },
+            Kind::MovingAi => {
+                if !(movingai_grid_size.is_finite() && movingai_grid_size > 0.0) {
+                    return Err(format!(
+                        "MovingAI cell size {movingai_grid_size} m must be positive"
+                    ));
                 }
-                Kind::RosImage => {
-                    return Err(js_error(format!(
-                        "`{name}` is an image: a ROS map needs its .yaml file too (pick both)"
-                    )));
+                MapSource::Movingai {
+                    path,
+                    grid_size: movingai_grid_size,
+                    origin: [0.0, 0.0],
                 }
-                Kind::RosYaml => unreachable!("handled above"),
-            };
-            return Ok(((*name).to_owned(), map));
-        }
-        Err(js_error(format!(
-            "{} files chosen: {EXPECTED}",
-            self.0.len()
-        )))
+            }
+            Kind::RosImage | Kind::RosYaml => {
+                return Err(format!(
+                    "`{name}` is an image: a ROS map needs its .yaml file too (pick both)"
+                ));
+            }
+        };
+        Ok(((*name).to_owned(), source))
     }
 }
 
@@ -215,12 +215,27 @@ mod tests {
                                 negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
         let cases: Vec<(Files, &str)> = vec![
             (files(&[]), "no file chosen: expected"),
-            (files(&[("notes.txt", b"hello")]), "`notes.txt` is not a map file I know"),
+            (
+                files(&[("notes.txt", b"hello")]),
+                "`notes.txt` is not a map file I know",
+            ),
             (files(&[("m.json", b"{\"width\": 0}")]), "`m.json`: "),
-            (files(&[("m.pgm", b"P5 1 1 255\n\x00")]), "`m.pgm` is an image: a ROS map needs its .yaml"),
-            (files(&[("m.yaml", ros_yaml)]), "`m.yaml` names the image `other.pgm`: pick it together"),
-            (files(&[("a.json", b"{}"), ("b.json", b"{}")]), "2 files chosen"),
-            (files(&[("a.map", b"type octile\nheight 1\nwidth 1\nmap\n.\n")]), ""),
+            (
+                files(&[("m.pgm", b"P5 1 1 255\n\x00")]),
+                "`m.pgm` is an image: a ROS map needs its .yaml",
+            ),
+            (
+                files(&[("m.yaml", ros_yaml)]),
+                "`m.yaml` names the image `other.pgm`: pick it together",
+            ),
+            (
+                files(&[("a.json", b"{}"), ("b.json", b"{}")]),
+                "2 files chosen",
+            ),
+            (
+                files(&[("a.map", b"type octile\nheight 1\nwidth 1\nmap\n.\n")]),
+                "",
+            ),
         ];
         for (f, expect) in cases {
             match f.load_map(1.0) {

@@ -56,8 +56,8 @@ pub fn stage_into(root: &Path, out: &Path) -> Result<usize> {
     let mut scenarios = Vec::new();
     for path in paths {
         let text = std::fs::read_to_string(&path)?;
-        let scenario: Value = serde_json::from_str(&text)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let scenario: Value =
+            serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
         let field = |k: &str| scenario[k].as_str().unwrap_or_default().to_owned();
         let name = field("name");
         let files = match map_files(root, &scenario["map"]) {
@@ -87,7 +87,10 @@ pub fn stage_into(root: &Path, out: &Path) -> Result<usize> {
     // The default first, the rest in file order.
     scenarios.sort_by_key(|s| s["name"] != DEFAULT_SCENARIO);
     let index = json!({ "default": DEFAULT_SCENARIO, "scenarios": scenarios });
-    std::fs::write(out.join("index.json"), serde_json::to_string_pretty(&index)?)?;
+    std::fs::write(
+        out.join("index.json"),
+        serde_json::to_string_pretty(&index)?,
+    )?;
     Ok(scenarios.len())
 }
 
@@ -200,9 +203,10 @@ mod tests {
         let out = std::env::temp_dir().join(format!("rtnav-xtask-fixtures-{}", std::process::id()));
         let root = tools::repo_root();
         let n = stage_into(&root, &out.join("fixtures")).unwrap();
-        let index: Value =
-            serde_json::from_str(&std::fs::read_to_string(out.join("fixtures/index.json")).unwrap())
-                .unwrap();
+        let index: Value = serde_json::from_str(
+            &std::fs::read_to_string(out.join("fixtures/index.json")).unwrap(),
+        )
+        .unwrap();
         let scenarios = index["scenarios"].as_array().unwrap();
         assert_eq!(scenarios.len(), n);
         assert_eq!(scenarios[0]["name"], DEFAULT_SCENARIO);

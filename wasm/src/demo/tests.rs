@@ -12,8 +12,8 @@ fn root() -> std::path::PathBuf {
 
 /// A scenario fixture's JSON and the map file it names.
 fn scenario(name: &str) -> (String, Files) {
-    let json = std::fs::read_to_string(root().join(format!("fixtures/scenarios/{name}.json")))
-        .unwrap();
+    let json =
+        std::fs::read_to_string(root().join(format!("fixtures/scenarios/{name}.json"))).unwrap();
     let s = Scenario::from_json(&json).unwrap();
     let path = match &s.map {
         rtnav::system::MapSource::Json { path } => path.clone(),
@@ -69,7 +69,10 @@ fn step_turns_wall_time_times_speed_into_whole_ticks() {
     demo.paused = true;
     assert_eq!(demo.step(16.0), 0);
     demo.run_ticks(1);
-    assert_eq!(demo.system.time_ns(), (16 + 1 + 1 + 100 + 8 + 256 + 1) * 1_000_000);
+    assert_eq!(
+        demo.system.time_ns(),
+        (16 + 1 + 1 + 100 + 8 + 256 + 1) * 1_000_000
+    );
     assert_eq!(
         demo.set_speed(32.0).unwrap_err(),
         "speed 32× is outside 0.25× to 16×"
@@ -180,9 +183,15 @@ fn inject_fault_error_with_reason_reset_and_activate_again() {
         demo.activate("DriveControl").unwrap_err(),
         "component `DriveControl0`: cannot activate while Error"
     );
-    assert_eq!(demo.reset("DriveControl").unwrap(), LifecycleState::Inactive);
+    assert_eq!(
+        demo.reset("DriveControl").unwrap(),
+        LifecycleState::Inactive
+    );
     assert_eq!(demo.components()[7].info.last_error, None);
-    assert_eq!(demo.activate("DriveControl").unwrap(), LifecycleState::Active);
+    assert_eq!(
+        demo.activate("DriveControl").unwrap(),
+        LifecycleState::Active
+    );
     assert_eq!(demo.system.state().to_string(), "Active");
     assert_eq!(
         demo.activate("Planner").unwrap_err(),
@@ -208,7 +217,12 @@ fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
     let physics = &demo.components()[2];
     assert_eq!(physics.info.state, LifecycleState::Error);
     assert!(
-        physics.info.last_error.as_deref().unwrap().starts_with("bump: "),
+        physics
+            .info
+            .last_error
+            .as_deref()
+            .unwrap()
+            .starts_with("bump: "),
         "{:?}",
         physics.info.last_error
     );
@@ -245,7 +259,11 @@ fn an_obstacle_painted_on_the_path_is_driven_around() {
     assert_eq!(k, ["MapUpdated", "LocalPlanSent"]);
     // LocalPathPlanning made a potential-field plan around it (000 §5.2.4.9).
     assert_eq!(events[1].data["replanned"], true);
-    assert!(events[1].text.ends_with("(replanned)"), "{}", events[1].text);
+    assert!(
+        events[1].text.ends_with("(replanned)"),
+        "{}",
+        events[1].text
+    );
     let block: Vec<(usize, usize)> = xs
         .iter()
         .zip(&ys)
@@ -278,7 +296,10 @@ fn a_bad_map_file_is_refused_and_the_map_stays() {
     good.add("room.json", room.to_string().into_bytes());
     demo.load_map_files(&good, 1.0).unwrap();
     let map = demo.map_view().unwrap();
-    assert_eq!((map.name.as_str(), map.width, map.height), ("room.json", 20, 10));
+    assert_eq!(
+        (map.name.as_str(), map.width, map.height),
+        ("room.json", 20, 10)
+    );
     assert!(demo.scenario.is_none() && demo.plan().goal.is_none());
     assert_eq!(demo.system.state().to_string(), "Partial");
     demo.set_position(Pose::new(1.0, 1.2, 0.0), Pose::new(4.0, 1.2, 0.0), false)
