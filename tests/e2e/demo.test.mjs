@@ -281,6 +281,9 @@ test('Inject fault → Error with the reason → Reset → Inactive → Activate
   await page.click(`${row} .act`);
   await expectState(page, 'MotorControl', 'Active');
   await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
+  // The robot drives on.
+  const driven = (await telemetry(page)).path_length;
+  await page.waitForFunction((d) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > d + 0.3, driven, WAIT);
   const changes = await logged(page, 'StateChanged');
   assert.deepEqual(changes.filter((t) => t.startsWith('MotorControl0')), [
     'MotorControl0: Created → Inactive',
@@ -314,10 +317,23 @@ test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', {
   assert.equal((await logged(page, 'Bump')).length, 1);
   assert.equal(await page.textContent('#telemetry dd[data-key="status"]'), 'Error: bumped');
   const goal = (await plan(page)).goal;
+  const pose = (await telemetry(page)).pose;
   await page.click('#reset-all');
   await page.waitForSelector('#system-state[data-state="Inactive"]', WAIT);
   await expectState(page, 'PhysicsSim', 'Inactive');
+  assert.equal(await page.isVisible('#components li[data-component="PhysicsSim"] .rtc-reason'), false);
+  // Nothing held is lost: the goal, the robot's pose, the painted cells.
   assert.deepEqual((await plan(page)).goal, goal);
+  assert.deepEqual((await telemetry(page)).pose, pose);
+  assert.equal(await page.evaluate(([x, y]) => window.rtnav.demo.cell(x, y), cell), 1);
+  // Erase the obstacle, activate: the goal is sent again and the robot drives on.
+  await page.click('#tool-erase');
+  await page.mouse.click(x, y);
+  await page.waitForFunction(([cx, cy]) => window.rtnav.demo.cell(cx, cy) === 0, cell, WAIT);
+  const driven = (await telemetry(page)).path_length;
+  await activateAll(page);
+  await page.waitForFunction((d) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > d + 0.3, driven, WAIT);
+  assert.deepEqual(await logged(page, 'GoalResent'), ['DriveControl had no path after its activation: the goal was sent again']);
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -13,9 +13,10 @@
 //! robot starts (the physics is activated), not from the page load: the obstacle of
 //! `appearing_obstacle` appears while the robot drives, however long the page was open.
 
-use rtnav::components::MapUpdate;
+use rtnav::components::{DriveStatus, MapUpdate};
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
+use rtnav::motion::DrivePhase;
 use rtnav::render::{Layers, Renderer};
 use rtnav::rtc::{LifecycleState, Time};
 use rtnav::system::{ComponentKind, MapSource, Rates, Scenario, ScenarioEvent, System};
@@ -71,6 +72,8 @@ pub(crate) struct Inner {
     notes: Vec<EventView>,
     /// Whether something changed since the last frame.
     dirty: bool,
+    /// Whether the page asked for a plan during DriveControl's current spell without a path.
+    resume_asked: bool,
 }
 
 impl Inner {
@@ -91,6 +94,7 @@ impl Inner {
             due: Vec::new(),
             notes: Vec::new(),
             dirty: true,
+            resume_asked: false,
         })
     }
 
@@ -195,7 +199,50 @@ impl Inner {
             }
             self.apply_due();
         }
+        self.resume_if_idle();
         self.dirty = true;
+    }
+
+    /// DriveControl starts without a path when it is activated (after a Reset, or a
+    /// Deactivate), and LocalPathPlanning sends a path only when it changes: the robot would
+    /// stand still before a goal it still holds. As InventGUI's operator would, the page
+    /// then sends the held goal again (`SetPosition` from where the robot is) — once per
+    /// such spell, only while the robot drives, with a goal held, not reached, not halted.
+    fn resume_if_idle(&mut self) {
+        let idle = matches!(
+            self.system.drive_control().status(),
+            DriveStatus::Driving(DrivePhase::Idle)
+        );
+        if !idle {
+            self.resume_asked = false;
+            return;
+        }
+        let s = &self.system;
+        let Some(goal) = s.goal() else {
+            return;
+        };
+        if self.resume_asked
+            || !s.is_driving()
+            || s.is_arrived()
+            || s.is_halted()
+            || s.component_state(ComponentKind::LocalPathPlanning) != LifecycleState::Active
+        {
+            return;
+        }
+        self.resume_asked = true;
+        let direction = s.direction();
+        let text = match self.system.set_goal(goal, direction) {
+            Ok(()) => "DriveControl had no path after its activation: the goal was sent again"
+                .to_owned(),
+            Err(e) => format!("DriveControl has no path; sending the goal again was refused: {e}"),
+        };
+        self.notes.push(EventView {
+            time_s: self.system.time(),
+            kind: "GoalResent".to_owned(),
+            level: "info",
+            text,
+            data: serde_json::Value::Null,
+        });
     }
 
     fn apply_due(&mut self) {

@@ -135,6 +135,8 @@ fn activate_all_drives_to_the_goal() {
     let t = demo.telemetry();
     assert!(t.arrived && t.distance_to_goal.unwrap() <= 0.1, "{t:?}");
     assert_eq!(t.bumps, 0);
+    // The preview's plan only: the page asked for no other.
+    assert_eq!(t.local_plans, 1);
     let events = demo.take_events();
     assert_eq!(events.iter().filter(|e| e.kind == "Arrived").count(), 1);
     let arrived = events.iter().find(|e| e.kind == "Arrived").unwrap();
@@ -237,6 +239,17 @@ fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
     // Erase the obstacle: the robot can drive on.
     demo.set_cells(&xs, &ys, 0).unwrap();
     assert_eq!(demo.activate_all(), "Active");
+    demo.set_speed(16.0).unwrap();
+    // DriveControl starts afresh; the page asks for a plan and the robot drives on.
+    assert!(run(&mut demo, 120.0, |d| d.system.is_arrived()));
+    let events = demo.take_events();
+    let resent: Vec<&EventView> = events.iter().filter(|e| e.kind == "GoalResent").collect();
+    assert_eq!(resent.len(), 1);
+    assert_eq!(
+        resent[0].text,
+        "DriveControl had no path after its activation: the goal was sent again"
+    );
+    assert_eq!(demo.telemetry().bumps, 1);
 }
 
 #[test]
