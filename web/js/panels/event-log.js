@@ -4,6 +4,8 @@
 import { el } from '../dom.js';
 
 const MAX_ENTRIES = 300;
+/** Events important enough to be shown over the canvas too. */
+const NOTICE = new Set(['Bump', 'ComponentError', 'PlanningFailed', 'Arrived']);
 
 export function createEventLog(root, app) {
   const { demo } = app;
@@ -26,6 +28,8 @@ export function createEventLog(root, app) {
     update() {
       const events = JSON.parse(app.guard.call(() => demo.take_events()) ?? '[]');
       for (const e of events) add(e);
+      const loud = events.filter((e) => NOTICE.has(e.kind)).at(-1);
+      if (loud) app.notice.show(loud.text, loud.level);
     },
     /** A note of the page's own (`level`: info, success, warn, error). */
     page(text, level = 'info') {
