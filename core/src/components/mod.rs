@@ -20,3 +20,7 @@ pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanni
 // Demo component for the browser page until the robot system exists (tooling issue).
 pub mod heartbeat;
 pub use heartbeat::{Heartbeat, HeartbeatParams};
+
+// --- maps: GlobalPathPlanning ---
+mod global_path_planning;
+pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams};

@@ -1,93 +1,355 @@
-//! Exact Euclidean distance transform in linear time (Felzenszwalb & Huttenlocher, "Distance
-//! Transforms of Sampled Functions", 2012), SPEC §2 "Obstacle distance".
+//! Exact Euclidean distance transform in linear time, SPEC §2 "Obstacle distance".
+//!
+//! The algorithm is the two-phase one of Meijster, Roerdink & Hesselink ("A general algorithm
+//! for computing distance transforms in linear time", 2000), which computes the same lower
+//! envelope of parabolas as Felzenszwalb & Huttenlocher ("Distance Transforms of Sampled
+//! Functions", 2012), with every squared distance an exact integer:
+//!
+//! 1. **Column phase**: `g(x, y)` = distance in cells from `(x, y)` to the nearest obstacle in
+//!    its own column. Two sweeps (down, then up) done row by row, so the inner loop runs along
+//!    memory and vectorises.
+//! 2. **Row phase**: for each row, `d²(x, y) = min over x' of (x − x')² + g(x', y)²`. Either
+//!    the lower envelope of one parabola per column, found in one pass with a stack (integer
+//!    parabolas; the intersection's floor by one exact `f64` division, see [`floor_div`]), or,
+//!    for rows whose distances are small, a bounded sideways scan ([`row_scan`]) that is
+//!    cheaper there. Both are exact, so the choice only changes the time.
+//!
+//! Metres are `√d² · GridSize` (`libm::sqrt`), through a table for small `d²`.
 //!
 //! Everything outside the map is obstacle (SPEC §2), so the transform sees a virtual ring of
-//! obstacle cells around the map: distances are always finite.
+//! obstacle cells around the map: in the column phase the rows `y = −1` and `y = height`, in
+//! the row phase the columns `x = −1` and `x = width`. Distances are therefore always finite
+//! and at most half the map's smaller side (plus one).
+//!
+//! The row phase of a row depends only on that row of `g`, and `g` of a column only on that
+//! column's cells. That is what makes the exact *incremental* update after `MapUpdate` simple
+//! ([`DistanceField::update_cells`]): recompute `g` for the changed columns, then the row phase
+//! for exactly the rows where some `g` changed.
 
-/// Squared distance, in cells², from every cell's centre to the nearest obstacle cell's
-/// centre, counting the ring of cells just outside the map as obstacles. `obstacle` is
-/// x-fastest, `width × height`.
-pub fn euclidean_distance_squared(obstacle: &[bool], width: usize, height: usize) -> Vec<f64> {
-    debug_assert_eq!(obstacle.len(), width * height);
-    let n = width.max(height) + 2;
-    let mut f = vec![0.0; n];
-    let mut out = vec![0.0; n];
-    let mut v = vec![0usize; n];
-    let mut z = vec![0.0; n + 1];
-    let mut cols = vec![0.0; width * height];
-    // Column pass: along y, with virtual obstacles at y = -1 and y = height.
-    for x in 0..width {
-        f[0] = 0.0;
-        f[height + 1] = 0.0;
-        for y in 0..height {
-            f[y + 1] = if obstacle[x + y * width] {
-                0.0
-            } else {
-                f64::INFINITY
-            };
-        }
-        dt1d(&f[..height + 2], &mut out[..height + 2], &mut v, &mut z);
-        for y in 0..height {
-            cols[x + y * width] = out[y + 1];
-        }
-    }
-    // Row pass: along x, with virtual obstacle columns at x = -1 and x = width.
-    let mut result = vec![0.0; width * height];
-    for y in 0..height {
-        f[0] = 0.0;
-        f[width + 1] = 0.0;
-        f[1..=width].copy_from_slice(&cols[y * width..(y + 1) * width]);
-        dt1d(&f[..width + 2], &mut out[..width + 2], &mut v, &mut z);
-        result[y * width..(y + 1) * width].copy_from_slice(&out[1..=width]);
-    }
-    result
+/// The obstacle distances of a map, and what is needed to keep them current.
+///
+/// Invariants: `column.len() == distance.len() == width · height`; `column` is the column
+/// phase of the current cells and `distance` the full transform in metres.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct DistanceField {
+    /// Phase 1: cells from each cell to the nearest obstacle in its column (virtual rows
+    /// `−1` and `height` included), x fastest.
+    column: Vec<u32>,
+    /// Obstacle distance in metres, x fastest.
+    distance: Vec<f64>,
 }
 
-/// One-dimensional squared-distance transform of `f` into `d` (lower envelope of parabolas).
-fn dt1d(f: &[f64], d: &mut [f64], v: &mut [usize], z: &mut [f64]) {
-    let n = f.len();
-    let mut k = 0usize;
-    // Find the first finite site (there always is one: the virtual ends are 0).
-    let first = f.iter().position(|x| x.is_finite()).unwrap_or(0);
-    v[0] = first;
-    z[0] = f64::NEG_INFINITY;
-    z[1] = f64::INFINITY;
-    for q in first + 1..n {
-        if !f[q].is_finite() {
-            continue;
-        }
-        let qf = q as f64;
-        loop {
-            let p = v[k];
-            let pf = p as f64;
-            let s = ((f[q] + qf * qf) - (f[p] + pf * pf)) / (2.0 * (qf - pf));
-            if s <= z[k] && k > 0 {
-                k -= 1;
-                continue;
-            }
-            if s <= z[k] {
-                // k == 0 and the new parabola dominates from -inf.
-                v[0] = q;
-                z[0] = f64::NEG_INFINITY;
-                z[1] = f64::INFINITY;
-                break;
-            }
-            k += 1;
-            v[k] = q;
-            z[k] = s;
-            z[k + 1] = f64::INFINITY;
-            break;
+/// One parabola of the lower envelope: it is the lowest from position `start` on; its apex
+/// is at position `site`, height `g2` (the site column's squared distance).
+#[derive(Debug, Clone, Copy, Default)]
+struct Segment {
+    start: i64,
+    site: i64,
+    g2: i64,
+}
+
+impl Segment {
+    /// Squared distance from position `x` through this site.
+    #[inline]
+    fn at(self, x: i64) -> i64 {
+        let d = x - self.site;
+        d * d + self.g2
+    }
+}
+
+/// Scratch space of the row phase: the envelope (one segment per parabola), allocated once
+/// per transform, not per row.
+struct RowScratch {
+    envelope: Vec<Segment>,
+}
+
+impl RowScratch {
+    fn new(width: usize) -> Self {
+        Self {
+            envelope: vec![Segment::default(); width + 2],
         }
     }
-    k = 0;
-    for (q, dq) in d.iter_mut().enumerate().take(n) {
-        let qf = q as f64;
-        while z[k + 1] < qf {
+
+    /// Row phase for one row: `g` is the row of the column phase; `emit(x, d²)` receives the
+    /// exact squared distance of every cell `x` of the row, in increasing `x`.
+    ///
+    /// Positions are `x + 1`: position 0 and `width + 1` are the virtual obstacle columns
+    /// (`g = 0`) just outside the map.
+    #[inline]
+    fn row(&mut self, g: &[u32], mut emit: impl FnMut(usize, u64)) {
+        let w = g.len();
+        let m = (w + 2) as i64;
+        let env = &mut self.envelope[..w + 2];
+        env[0] = Segment::default();
+        let mut q = 0usize;
+        for u in 1..m {
+            let g2 = match g.get(u as usize - 1) {
+                Some(&gu) => i64::from(gu) * i64::from(gu),
+                None => 0,
+            };
+            let new = Segment {
+                start: 0,
+                site: u,
+                g2,
+            };
+            // Pop the parabolas that u undercuts at the start of their interval.
+            loop {
+                let top = env[q];
+                if top.at(top.start) <= new.at(top.start) {
+                    // u takes over after the intersection: ⌊n / d⌋ + 1 (see below).
+                    let n = u * u - top.site * top.site + g2 - top.g2;
+                    let start = 1 + floor_div(n, 2 * (u - top.site));
+                    if start < m {
+                        q += 1;
+                        env[q] = Segment { start, ..new };
+                    }
+                    break;
+                }
+                if q == 0 {
+                    // u is the lowest from position 0 on.
+                    env[0] = new;
+                    break;
+                }
+                q -= 1;
+            }
+        }
+        // Read the envelope segment by segment; only the real columns (positions 1..=w)
+        // are emitted, as x = position − 1.
+        let last = w as i64;
+        for k in 0..=q {
+            let seg = env[k];
+            let from = seg.start.max(1);
+            let to = if k < q { env[k + 1].start - 1 } else { last }.min(last);
+            for p in from..=to {
+                emit(p as usize - 1, seg.at(p) as u64);
+            }
+        }
+    }
+}
+
+/// Rows whose column distances average at most this many cells use [`row_scan`]: its work
+/// per cell is at most about the cell's distance, a few instructions each, with none of the
+/// envelope's hard-to-predict branches; above it the envelope's fixed cost per cell wins.
+const SCAN_LIMIT: u64 = 24;
+
+/// Row phase by a bounded scan: from each cell `x`, look at the columns `x ± k` for
+/// `k = 1, 2, …` while `k²` is below the best squared distance found (starting from the
+/// cell's own column). Exact: a column at `|x − i| ≥ k` adds at least `k²`, so once `k²`
+/// reaches the best nothing farther can beat it. Beyond the row's ends the virtual obstacle
+/// columns count as `g = 0`.
+#[inline]
+fn row_scan(g: &[u32], mut emit: impl FnMut(usize, u64)) {
+    let w = g.len();
+    for x in 0..w {
+        let mut best = u64::from(g[x]) * u64::from(g[x]);
+        let mut k = 1usize;
+        while ((k * k) as u64) < best {
+            let left = if k <= x { u64::from(g[x - k]) } else { 0 };
+            let right = g.get(x + k).map_or(0, |&v| u64::from(v));
+            let side = left.min(right);
+            best = best.min((k * k) as u64 + side * side);
             k += 1;
         }
-        let p = v[k] as f64;
-        *dq = (qf - p) * (qf - p) + f[v[k]];
+        emit(x, best);
     }
+}
+
+/// The row phase of one row into metres, by the cheaper of the two exact methods.
+#[inline]
+fn transform_row(scratch: &mut RowScratch, metres: &Metres, g: &[u32], out: &mut [f64]) {
+    let total: u64 = g.iter().map(|&v| u64::from(v)).sum();
+    if total <= SCAN_LIMIT * g.len() as u64 {
+        row_scan(g, |x, d2| out[x] = metres.get(d2));
+    } else {
+        scratch.row(g, |x, d2| out[x] = metres.get(d2));
+    }
+}
+
+/// `⌊n / d⌋` for `d > 0`, via one `f64` division (much faster than a 64-bit integer one) and
+/// still exact here: `n` and `d` are integers of magnitude below 2^53 (`n` ≤ (width + 2)² +
+/// (height + 1)² < 2^49 for at most 2^24 cells), so a quotient that is not a whole number lies
+/// at least `1/d` from one, more than the division's rounding error (`|n/d| · 2^-53 < 1/d`):
+/// the rounded quotient has the same floor.
+#[inline]
+fn floor_div(n: i64, d: i64) -> i64 {
+    let q = n as f64 / d as f64;
+    let t = q as i64;
+    if (t as f64) > q { t - 1 } else { t }
+}
+
+/// Squared distances below this many cells² are turned into metres through a table built
+/// once per transform (`√d² · GridSize` by the same formula), instead of one `sqrt` per cell;
+/// the values are identical, it only saves time.
+const METRE_TABLE_LEN: usize = 4096;
+
+/// `√d² · grid_size`: the one formula for metres (SPEC §6: `sqrt` through `libm`).
+fn to_metres(d2: u64, grid_size: f64) -> f64 {
+    libm::sqrt(d2 as f64) * grid_size
+}
+
+/// Metres of a row phase, with the lookup table for small `d²`.
+struct Metres {
+    table: Vec<f64>,
+    grid_size: f64,
+}
+
+impl Metres {
+    fn new(grid_size: f64) -> Self {
+        Self {
+            table: (0..METRE_TABLE_LEN as u64)
+                .map(|d2| to_metres(d2, grid_size))
+                .collect(),
+            grid_size,
+        }
+    }
+
+    #[inline]
+    fn get(&self, d2: u64) -> f64 {
+        match self.table.get(d2 as usize) {
+            Some(&v) => v,
+            None => to_metres(d2, self.grid_size),
+        }
+    }
+}
+
+/// Phase 1 for the whole map, row by row (`cells`: x fastest, 1 = obstacle).
+fn column_phase(cells: &[u8], width: usize, height: usize, column: &mut [u32]) {
+    // Down sweep: distance to the nearest obstacle at or above (virtual row −1 is obstacle).
+    for (g, &c) in column[..width].iter_mut().zip(&cells[..width]) {
+        *g = u32::from(c == 0);
+    }
+    for y in 1..height {
+        let (done, rest) = column.split_at_mut(y * width);
+        let prev = &done[(y - 1) * width..];
+        let row = &mut rest[..width];
+        let crow = &cells[y * width..(y + 1) * width];
+        for ((g, &p), &c) in row.iter_mut().zip(prev).zip(crow) {
+            // Branch-free so the loop vectorises (c is 0 or 1).
+            *g = (p + 1) * u32::from(c == 0);
+        }
+    }
+    // Up sweep: virtual row `height` is obstacle, so the last row is at most 1.
+    for g in &mut column[(height - 1) * width..height * width] {
+        *g = (*g).min(1);
+    }
+    for y in (0..height - 1).rev() {
+        let (head, tail) = column.split_at_mut((y + 1) * width);
+        let row = &mut head[y * width..];
+        let below = &tail[..width];
+        for (g, &b) in row.iter_mut().zip(below) {
+            *g = (*g).min(b + 1);
+        }
+    }
+}
+
+/// Phase 1 for the single column `x` into `out` (length `height`).
+fn column_phase_one(cells: &[u8], width: usize, x: usize, out: &mut [u32]) {
+    let mut run = 0u32;
+    for (y, g) in out.iter_mut().enumerate() {
+        run = if cells[x + y * width] == 1 {
+            0
+        } else {
+            run + 1
+        };
+        *g = run;
+    }
+    run = 0;
+    for g in out.iter_mut().rev() {
+        run = (run + 1).min(*g);
+        *g = run;
+    }
+}
+
+impl DistanceField {
+    /// The transform of `cells` (x fastest, 1 = obstacle; `width, height ≥ 1`), in metres
+    /// with `grid_size`.
+    pub(crate) fn new(cells: &[u8], width: usize, height: usize, grid_size: f64) -> Self {
+        debug_assert_eq!(cells.len(), width * height);
+        let mut field = Self {
+            column: vec![0; cells.len()],
+            distance: vec![0.0; cells.len()],
+        };
+        field.recompute(cells, width, height, grid_size);
+        field
+    }
+
+    /// The whole transform again, in place (no allocation beyond the row scratch).
+    fn recompute(&mut self, cells: &[u8], width: usize, height: usize, grid_size: f64) {
+        column_phase(cells, width, height, &mut self.column);
+        let mut scratch = RowScratch::new(width);
+        let metres = Metres::new(grid_size);
+        for (g, out) in self
+            .column
+            .chunks_exact(width)
+            .zip(self.distance.chunks_exact_mut(width))
+        {
+            transform_row(&mut scratch, &metres, g, out);
+        }
+    }
+
+    /// Obstacle distances in metres, x fastest.
+    pub(crate) fn distances(&self) -> &[f64] {
+        &self.distance
+    }
+
+    /// Brings the field up to date after the cells at flat indices `changed` (any order,
+    /// duplicates allowed) changed in `cells`. Exact: the result equals
+    /// [`DistanceField::new`] on the new cells.
+    pub(crate) fn update_cells(
+        &mut self,
+        cells: &[u8],
+        width: usize,
+        height: usize,
+        grid_size: f64,
+        changed: &[usize],
+    ) {
+        let mut columns: Vec<usize> = changed.iter().map(|&i| i % width).collect();
+        columns.sort_unstable();
+        columns.dedup();
+        // Many columns: the row-major full recompute is cheaper than strided columns.
+        if columns.len() * 8 > width {
+            self.recompute(cells, width, height, grid_size);
+            return;
+        }
+        let mut dirty = vec![false; height];
+        let mut col = vec![0u32; height];
+        for &x in &columns {
+            column_phase_one(cells, width, x, &mut col);
+            for (y, &g) in col.iter().enumerate() {
+                let old = &mut self.column[x + y * width];
+                if *old != g {
+                    *old = g;
+                    dirty[y] = true;
+                }
+            }
+        }
+        let mut scratch = RowScratch::new(width);
+        let metres = Metres::new(grid_size);
+        for y in (0..height).filter(|&y| dirty[y]) {
+            let r = y * width..(y + 1) * width;
+            let out = &mut self.distance[r.clone()];
+            transform_row(&mut scratch, &metres, &self.column[r], out);
+        }
+    }
+}
+
+/// Squared distance, in cells², from every cell's centre to the nearest obstacle cell's
+/// centre, counting the ring of cells just outside the map as obstacles (SPEC §2). `obstacle`
+/// is x fastest, `width × height`; an empty vector if the length does not match or a side is
+/// 0. The metre values a [`super::GridMap`] holds are `√d² · GridSize` of these.
+pub fn euclidean_distance_squared(obstacle: &[bool], width: usize, height: usize) -> Vec<f64> {
+    if width == 0 || height == 0 || obstacle.len() != width * height {
+        return Vec::new();
+    }
+    let cells: Vec<u8> = obstacle.iter().map(|&o| u8::from(o)).collect();
+    let mut column = vec![0; cells.len()];
+    column_phase(&cells, width, height, &mut column);
+    let mut out = vec![0.0; cells.len()];
+    let mut scratch = RowScratch::new(width);
+    for (g, o) in column.chunks_exact(width).zip(out.chunks_exact_mut(width)) {
+        scratch.row(g, |x, d2| o[x] = d2 as f64);
+    }
+    out
 }
 
 #[cfg(test)]
@@ -114,10 +376,54 @@ mod tests {
         out
     }
 
+    /// Both row methods equal the row formula on random rows, short and long distances.
+    #[test]
+    fn envelope_and_scan_agree_with_the_formula() {
+        let mut seed = 777u64;
+        let mut next = |n: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % n
+        };
+        let mut scratch = RowScratch::new(300);
+        for _ in 0..400 {
+            let w = 1 + next(300) as usize;
+            let top = [1, 3, 30, 400][next(4) as usize];
+            let g: Vec<u32> = (0..w).map(|_| next(top + 1) as u32).collect();
+            let formula: Vec<u64> = (0..w as i64)
+                .map(|x| {
+                    // Sites: the columns, and the virtual obstacles at −1 and w.
+                    let mut best = ((x + 1) * (x + 1)).min((w as i64 - x).pow(2)) as u64;
+                    for (i, &gi) in g.iter().enumerate() {
+                        let d = (x - i as i64).unsigned_abs();
+                        best = best.min(d * d + u64::from(gi) * u64::from(gi));
+                    }
+                    best
+                })
+                .collect();
+            let mut envelope = vec![0; w];
+            scratch.row(&g, |x, d2| envelope[x] = d2);
+            let mut scan = vec![0; w];
+            row_scan(&g, |x, d2| scan[x] = d2);
+            assert_eq!(envelope, formula, "{g:?}");
+            assert_eq!(scan, formula, "{g:?}");
+        }
+    }
+
     #[test]
     fn matches_brute_force_on_small_maps() {
         let mut seed = 12345u64;
-        for (w, h) in [(1, 1), (3, 1), (1, 4), (7, 5), (13, 9), (20, 20)] {
+        for (w, h) in [
+            (1, 1),
+            (3, 1),
+            (1, 4),
+            (7, 5),
+            (13, 9),
+            (20, 20),
+            (70, 3),
+            (5, 90),
+        ] {
             for density in [0u64, 5, 30, 90] {
                 let obstacle: Vec<bool> = (0..w * h)
                     .map(|_| {
@@ -127,11 +433,19 @@ mod tests {
                         (seed >> 33) % 100 < density
                     })
                     .collect();
+                let expected = brute(&obstacle, w, h);
                 assert_eq!(
                     euclidean_distance_squared(&obstacle, w, h),
-                    brute(&obstacle, w, h),
+                    expected,
                     "{w}x{h} density {density}"
                 );
+                let cells: Vec<u8> = obstacle.iter().map(|&o| u8::from(o)).collect();
+                let field = DistanceField::new(&cells, w, h, 0.25);
+                let metres: Vec<f64> = expected
+                    .iter()
+                    .map(|&d2| to_metres(d2 as u64, 0.25))
+                    .collect();
+                assert_eq!(field.distances(), &metres[..]);
             }
         }
     }

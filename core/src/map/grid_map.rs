@@ -1,7 +1,7 @@
 //! `GridMap`: the occupancy grid of `SetMap` (000 §3.2.2.1 (4), §5.2.4.1), its world frame,
 //! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (SPEC §2).
 
-use super::distance::euclidean_distance_squared;
+use super::distance::DistanceField;
 use crate::errors::MapError;
 use crate::rtc::Time;
 
@@ -24,8 +24,8 @@ pub struct GridMap {
     origin: (f64, f64),
     /// 0 free, 1 obstacle; `x + y * width`.
     cells: Vec<u8>,
-    /// Obstacle distance in metres, per cell (0 on obstacle cells).
-    distance: Vec<f64>,
+    /// Obstacle distances (metres, 0 on obstacle cells), kept current by every change.
+    field: DistanceField,
     version: Time,
 }
 
@@ -39,7 +39,8 @@ impl GridMap {
         origin: (f64, f64),
         cells: Vec<u8>,
     ) -> Result<Self, MapError> {
-        Self::check_shape(width as i64, height as i64)?;
+        let side = |n: usize| i64::try_from(n).unwrap_or(i64::MAX);
+        Self::check_shape(side(width), side(height))?;
         if !(grid_size.is_finite() && grid_size > 0.0) {
             return Err(MapError::BadGridSize { value: grid_size });
         }
@@ -62,17 +63,16 @@ impl GridMap {
                 value: i64::from(v),
             });
         }
-        let mut map = Self {
+        let field = DistanceField::new(&cells, width, height, grid_size);
+        Ok(Self {
             width,
             height,
             grid_size,
             origin,
             cells,
-            distance: Vec::new(),
+            field,
             version: Time::default(),
-        };
-        map.recompute_distance();
-        Ok(map)
+        })
     }
 
     /// `SetMap(MapData, MapLengthX, MapLengthY, GridSize)` (000 §3.2.2.1 (4)): origin (0, 0).
@@ -161,9 +161,11 @@ impl GridMap {
         &self.cells
     }
 
-    /// Obstacle distances in metres, x fastest (SPEC §2).
+    /// Obstacle distances in metres, x fastest (SPEC §2): from each cell's centre to the
+    /// nearest obstacle cell's centre, cells outside the map counting as obstacles; 0 on an
+    /// obstacle cell.
     pub fn distances(&self) -> &[f64] {
-        &self.distance
+        self.field.distances()
     }
 
     /// Flat index of an in-map cell.
@@ -181,9 +183,14 @@ impl GridMap {
         !self.contains(x, y) || self.cells[x as usize + y as usize * self.width] == 1
     }
 
-    /// Obstacle distance of an in-map cell, metres (0 on an obstacle cell).
-    pub fn obstacle_distance(&self, cell: Cell) -> f64 {
-        self.distance[self.index(cell)]
+    /// Obstacle distance of a cell, metres (SPEC §2): 0 on an obstacle cell, and 0 for a
+    /// cell outside the map, which counts as obstacle.
+    pub fn obstacle_distance(&self, (x, y): Cell) -> f64 {
+        if x < self.width && y < self.height {
+            self.field.distances()[x + y * self.width]
+        } else {
+            0.0
+        }
     }
 
     /// The cell containing world point `(wx, wy)` as signed indices (may be outside the map;
@@ -215,7 +222,8 @@ impl GridMap {
     }
 
     /// Whether a cell and every cell whose centre lies within `dmin` of it are passable
-    /// (000 §5.2.4.2, §5.2.4.4): equivalently its obstacle distance exceeds `dmin`.
+    /// (000 §5.2.4.2, §5.2.4.4): equivalently its obstacle distance exceeds `dmin`. False
+    /// for a cell outside the map.
     pub fn is_clear(&self, cell: Cell, dmin: f64) -> bool {
         self.obstacle_distance(cell) > dmin
     }
@@ -258,29 +266,37 @@ impl GridMap {
                 });
             }
         }
-        let mut changed = 0;
-        for i in 0..x.len() {
-            let idx = x[i] as usize + y[i] as usize * self.width;
-            let v = value[i] as u8;
-            if self.cells[idx] != v {
-                self.cells[idx] = v;
-                changed += 1;
-            }
-        }
-        self.version = tm;
-        if changed > 0 {
-            self.recompute_distance();
-        }
-        Ok(changed)
-    }
-
-    fn recompute_distance(&mut self) {
-        let obstacle: Vec<bool> = self.cells.iter().map(|&c| c == 1).collect();
-        let g = self.grid_size;
-        self.distance = euclidean_distance_squared(&obstacle, self.width, self.height)
-            .into_iter()
-            .map(|d2| libm::sqrt(d2) * g)
+        // Validated: apply. A cell listed twice takes its last value, as if the entries were
+        // applied one after the other; only cells whose value differs afterwards count.
+        let mut listed: Vec<(usize, u8)> = x
+            .iter()
+            .zip(y)
+            .map(|(&cx, &cy)| {
+                let idx = cx as usize + cy as usize * self.width;
+                (idx, self.cells[idx])
+            })
             .collect();
+        listed.sort_unstable();
+        listed.dedup_by_key(|e| e.0);
+        for i in 0..x.len() {
+            self.cells[x[i] as usize + y[i] as usize * self.width] = value[i] as u8;
+        }
+        let changed: Vec<usize> = listed
+            .iter()
+            .filter(|&&(idx, before)| self.cells[idx] != before)
+            .map(|&(idx, _)| idx)
+            .collect();
+        self.version = tm;
+        if !changed.is_empty() {
+            self.field.update_cells(
+                &self.cells,
+                self.width,
+                self.height,
+                self.grid_size,
+                &changed,
+            );
+        }
+        Ok(changed.len())
     }
 }
 

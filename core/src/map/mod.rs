@@ -1,6 +1,8 @@
-//! The grid map every component shares (SPEC §2) and its obstacle distances.
+//! The grid map every component shares (SPEC §2), its obstacle distances, and the map file
+//! formats.
 
 mod distance;
+pub mod formats;
 mod grid_map;
 
 pub use distance::euclidean_distance_squared;

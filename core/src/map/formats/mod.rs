@@ -1,0 +1,26 @@
+//! Map file formats, each read from text or bytes (no filesystem: the core also runs in the
+//! browser) into a valid [`GridMap`](super::GridMap) (SPEC §2, §5 "MapBuilder").
+//!
+//! | module | format |
+//! | --- | --- |
+//! | [`json`] | rtnav's own JSON map: size, `grid_size`, `origin` and the cells as rows of text |
+//! | [`ros`] | ROS `map_server` maps: a YAML file and a PGM/PNG image |
+//! | [`movingai`] | the MovingAI grid benchmark's `.map` and `.scen` files |
+//!
+//! Every loader checks its input completely and returns
+//! [`MapError::Format`](crate::errors::MapError::Format) naming the format, the line (where
+//! there is one) and the problem; nothing is half-loaded.
+//!
+//! The convenience functions that read files (`ros::load_file`, …) exist only off wasm32.
+
+pub mod json;
+pub mod movingai;
+pub mod ros;
+
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>, crate::errors::MapError> {
+    std::fs::read(path).map_err(|e| crate::errors::MapError::Io {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    })
+}

@@ -1,0 +1,284 @@
+//! The MovingAI grid pathfinding benchmark's `.map` and `.scen` files (SPEC §5
+//! "GlobalPathPlanning"; N. Sturtevant, "Benchmarks for Grid-Based Pathfinding", 2012;
+//! movingai.com/benchmarks/formats.html).
+//!
+//! **Coordinates.** MovingAI's `(x, y)` has x the column and y the *row counted from the top*
+//! (row 0 is the first map line). A [`GridMap`] has y pointing up, (0, 0) the lower-left
+//! cell. The file is therefore read so that it looks the same way up: MovingAI `(x, y)` is
+//! the `GridMap` cell `(x, height − 1 − y)` ([`to_cell`]), and scenario coordinates are
+//! converted the same way ([`ScenProblem::start_cell`], [`ScenProblem::goal_cell`]). A
+//! vertical flip maps 8-neighbours to 8-neighbours and keeps the corner-cutting rule, so the
+//! optimal lengths of the `.scen` files hold unchanged.
+//!
+//! **`.map`**: the header lines `type octile`, `height H`, `width W` (in either order), then
+//! `map`, then `H` rows of `W` characters. `.`, `G`, `S` are passable (free), `@`, `O`, `T`,
+//! `W` are not (obstacle); any other character is an error. Spaces or tabs may separate a
+//! header key from its value; CRLF line ends and blank lines are accepted.
+//!
+//! **`.scen`**: the line `version 1` (or `version 1.0`), then one problem per line: bucket,
+//! map, map width, map height, start x, start y, goal x, goal y, optimal length — separated
+//! by tabs (then the map name may contain spaces) or by spaces.
+
+use crate::errors::MapError;
+use crate::map::{Cell, GridMap};
+
+const MAP: &str = "MovingAI .map";
+const SCEN: &str = "MovingAI .scen";
+
+fn err(format: &'static str, line: usize, reason: impl Into<String>) -> MapError {
+    MapError::Format {
+        format,
+        line: Some(line),
+        reason: reason.into(),
+    }
+}
+
+/// The `GridMap` cell of MovingAI coordinates `(x, y)` (y = row from the top) on a map
+/// `height` rows high: `(x, height − 1 − y)`. `None` if `y ≥ height`.
+pub fn to_cell(x: usize, y: usize, height: usize) -> Option<Cell> {
+    (y < height).then(|| (x, height - 1 - y))
+}
+
+/// Non-blank lines with their 1-based numbers, line ends (`\n`, `\r\n`, a final `\r`) and
+/// trailing blanks removed.
+fn lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    text.lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim_end()))
+        .filter(|(_, l)| !l.is_empty())
+}
+
+/// Reads a `.map` file into a [`GridMap`] with `GridSize` 1 m and origin (0, 0), rows
+/// flipped as the module documentation says.
+pub fn load_map(text: &str) -> Result<GridMap, MapError> {
+    let mut it = lines(text);
+    let (mut width, mut height, mut kind) = (None, None, None);
+    let mut last_line = 0;
+    loop {
+        let Some((n, line)) = it.next() else {
+            return Err(err(
+                MAP,
+                last_line + 1,
+                "missing the `map` line before the rows",
+            ));
+        };
+        last_line = n;
+        let mut words = line.split_whitespace();
+        let key = words.next().unwrap_or_default();
+        let value = words.next();
+        if words.next().is_some() {
+            return Err(err(MAP, n, format!("cannot read header line `{line}`")));
+        }
+        let number = |v: Option<&str>| -> Result<usize, MapError> {
+            v.and_then(|v| v.parse::<usize>().ok())
+                .filter(|&v| v >= 1)
+                .ok_or_else(|| {
+                    err(
+                        MAP,
+                        n,
+                        format!("`{line}`: {key} must be a whole number ≥ 1"),
+                    )
+                })
+        };
+        match (key, value) {
+            ("map", None) => break,
+            ("type", Some(t)) => kind = Some(t.to_owned()),
+            ("height", v) => height = Some(number(v)?),
+            ("width", v) => width = Some(number(v)?),
+            _ => return Err(err(MAP, n, format!("unexpected header line `{line}`"))),
+        }
+    }
+    match kind.as_deref() {
+        Some("octile") => {}
+        Some(other) => {
+            return Err(err(
+                MAP,
+                last_line,
+                format!("type `{other}` is not `octile`"),
+            ));
+        }
+        None => return Err(err(MAP, last_line, "missing `type octile` in the header")),
+    }
+    let width = width.ok_or_else(|| err(MAP, last_line, "missing `width` in the header"))?;
+    let height = height.ok_or_else(|| err(MAP, last_line, "missing `height` in the header"))?;
+    if width.saturating_mul(height) > crate::map::MAX_CELLS {
+        return Err(MapError::TooLarge {
+            width,
+            height,
+            cells: (width as u64).saturating_mul(height as u64),
+            limit: crate::map::MAX_CELLS,
+        });
+    }
+    let mut cells = vec![0u8; width * height];
+    let mut row = 0;
+    for (n, line) in it {
+        last_line = n;
+        if row == height {
+            return Err(err(
+                MAP,
+                n,
+                format!("more than the {height} rows the header gives"),
+            ));
+        }
+        let y = height - 1 - row;
+        let mut count = 0;
+        for (x, c) in line.chars().enumerate() {
+            count += 1;
+            if x >= width {
+                continue;
+            }
+            cells[x + y * width] = match c {
+                '.' | 'G' | 'S' => 0,
+                '@' | 'O' | 'T' | 'W' => 1,
+                other => {
+                    return Err(err(
+                        MAP,
+                        n,
+                        format!("column {x}: {other:?} is not a terrain character (.GS@OTW)"),
+                    ));
+                }
+            };
+        }
+        if count != width {
+            return Err(err(
+                MAP,
+                n,
+                format!("row {row} has {count} cells, expected width {width}"),
+            ));
+        }
+        row += 1;
+    }
+    if row != height {
+        return Err(err(
+            MAP,
+            last_line,
+            format!("only {row} rows, expected height {height}"),
+        ));
+    }
+    GridMap::new(width, height, 1.0, (0.0, 0.0), cells)
+}
+
+/// One problem of a `.scen` file, as written (MovingAI coordinates).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScenProblem {
+    /// The bucket (problems grouped by optimal length).
+    pub bucket: u32,
+    /// The map column: a bare name or a path.
+    pub map: String,
+    /// Map width in cells.
+    pub map_width: usize,
+    /// Map height in cells.
+    pub map_height: usize,
+    /// Start `(x, y)`, y the row from the top.
+    pub start: (usize, usize),
+    /// Goal `(x, y)`, y the row from the top.
+    pub goal: (usize, usize),
+    /// The optimal path length in cells (octile, no corner cutting).
+    pub optimal_length: f64,
+}
+
+impl ScenProblem {
+    /// The start as a `GridMap` cell: `(x, map_height − 1 − y)` (see the module docs).
+    pub fn start_cell(&self) -> Cell {
+        (self.start.0, self.map_height - 1 - self.start.1)
+    }
+
+    /// The goal as a `GridMap` cell: `(x, map_height − 1 − y)`.
+    pub fn goal_cell(&self) -> Cell {
+        (self.goal.0, self.map_height - 1 - self.goal.1)
+    }
+}
+
+/// Reads a `.scen` file (version 1 / 1.0). Every coordinate is checked to lie inside the
+/// map size given on its line.
+pub fn load_scen(text: &str) -> Result<Vec<ScenProblem>, MapError> {
+    let mut it = lines(text);
+    match it.next() {
+        Some((n, line)) => {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            if !matches!(words.as_slice(), ["version", "1" | "1.0"]) {
+                return Err(err(
+                    SCEN,
+                    n,
+                    format!("expected `version 1`, found `{line}`"),
+                ));
+            }
+        }
+        None => return Err(err(SCEN, 1, "empty file: expected `version 1`")),
+    }
+    it.map(|(n, line)| parse_problem(n, line)).collect()
+}
+
+fn parse_problem(n: usize, line: &str) -> Result<ScenProblem, MapError> {
+    let fields: Vec<&str> = if line.contains('\t') {
+        line.split('\t').map(str::trim).collect()
+    } else {
+        line.split_whitespace().collect()
+    };
+    let [bucket, map, w, h, sx, sy, gx, gy, opt] = fields.as_slice() else {
+        return Err(err(
+            SCEN,
+            n,
+            format!("expected 9 fields, found {}", fields.len()),
+        ));
+    };
+    let int = |name: &str, v: &str| -> Result<usize, MapError> {
+        v.parse::<usize>()
+            .map_err(|_| err(SCEN, n, format!("{name} `{v}` is not a whole number ≥ 0")))
+    };
+    let bucket = u32::try_from(int("bucket", bucket)?)
+        .map_err(|_| err(SCEN, n, format!("bucket `{bucket}` is too large")))?;
+    let (map_width, map_height) = (int("map width", w)?, int("map height", h)?);
+    let start = (int("start x", sx)?, int("start y", sy)?);
+    let goal = (int("goal x", gx)?, int("goal y", gy)?);
+    for (what, (x, y)) in [("start", start), ("goal", goal)] {
+        if x >= map_width || y >= map_height {
+            return Err(err(
+                SCEN,
+                n,
+                format!("{what} ({x}, {y}) is outside the {map_width}×{map_height} map"),
+            ));
+        }
+    }
+    let optimal_length = opt
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite() && *v >= 0.0)
+        .ok_or_else(|| {
+            err(
+                SCEN,
+                n,
+                format!("optimal length `{opt}` is not a number ≥ 0"),
+            )
+        })?;
+    Ok(ScenProblem {
+        bucket,
+        map: (*map).to_owned(),
+        map_width,
+        map_height,
+        start,
+        goal,
+        optimal_length,
+    })
+}
+
+/// Reads a `.map` file (native only).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn load_map_file(path: impl AsRef<std::path::Path>) -> Result<GridMap, MapError> {
+    load_map(&text_of(path.as_ref(), MAP)?)
+}
+
+/// Reads a `.scen` file (native only).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn load_scen_file(path: impl AsRef<std::path::Path>) -> Result<Vec<ScenProblem>, MapError> {
+    load_scen(&text_of(path.as_ref(), SCEN)?)
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn text_of(path: &std::path::Path, format: &'static str) -> Result<String, MapError> {
+    String::from_utf8(super::read_file(path)?).map_err(|e| MapError::Format {
+        format,
+        line: None,
+        reason: format!("not UTF-8: {e}"),
+    })
+}

@@ -1,0 +1,392 @@
+//! ROS `map_server` maps: a YAML file and an image (PGM or PNG), read as map_server reads
+//! them (SPEC §2, §5 "MapBuilder"; the rule is the one `../shared/data/README.md` gives).
+//!
+//! The YAML keys (all required except `mode`, as in map_server; other keys are ignored, as
+//! map_server ignores them):
+//!
+//! | key | meaning |
+//! | --- | --- |
+//! | `image` | the image file, relative to the YAML file (only [`load_file`] reads it) |
+//! | `resolution` | metres per pixel → `GridSize` |
+//! | `origin` | `[x, y, yaw]`: the pose of the lower-left pixel → the map origin (yaw is kept in [`RosMapYaml::origin`] but a `GridMap` is axis-aligned, so it is not applied — as "many parts of the system" in ROS ignore it) |
+//! | `negate` | `0`/`1` (or `false`/`true`): swap the meaning of black and white |
+//! | `occupied_thresh`, `free_thresh` | thresholds on the occupancy probability `p` |
+//! | `mode` | `trinary` (default) or `scale`; `raw` is refused (its values are not occupancy) |
+//!
+//! Per pixel, with `v` the mean of its channels (in trinary mode the alpha channel is part
+//! of the mean, as map_server does) and `max` the largest sample value (255 for 8-bit):
+//! `p = (max − v) / max`, or `p = v / max` when `negate` is set. Then `p ≥ occupied_thresh`
+//! → **occupied**, `p ≤ free_thresh` → **free**, anything else → **unknown**. In `scale`
+//! mode, a pixel that is not fully opaque is unknown, and the in-between probabilities
+//! (which map_server scales to 1–99) are unknown too: a `GridMap` cell is free or obstacle.
+//!
+//! (map_server's C++ compares with `>` and `<`; the data README states `≥` and `≤`, which is
+//! what is implemented. The two differ only for a `p` exactly equal to a threshold, which no
+//! 8-bit grey value reaches with the usual thresholds 0.65 / 0.196 / 0.25.)
+//!
+//! Occupied cells become obstacles, free cells free, and unknown cells obstacles by default
+//! ([`UnknownCells`]; a robot should not plan through what it has not seen). Image row 0 is
+//! the top of the map: pixel `(column, row)` is the `GridMap` cell
+//! `(column, height − 1 − row)`.
+
+use std::io::Cursor;
+
+use serde::Deserialize;
+
+use crate::errors::MapError;
+use crate::map::{GridMap, MAX_CELLS};
+
+const YAML: &str = "ROS map YAML";
+const IMAGE: &str = "ROS map image";
+
+fn yaml_err(reason: impl Into<String>) -> MapError {
+    MapError::Format {
+        format: YAML,
+        line: None,
+        reason: reason.into(),
+    }
+}
+
+fn image_err(reason: impl Into<String>) -> MapError {
+    MapError::Format {
+        format: IMAGE,
+        line: None,
+        reason: reason.into(),
+    }
+}
+
+/// What unknown cells become in the `GridMap`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum UnknownCells {
+    /// Obstacle (the default): never plan through unexplored space.
+    #[default]
+    Obstacle,
+    /// Free.
+    Free,
+}
+
+/// Options of [`load`].
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RosLoadOptions {
+    /// What unknown cells become.
+    pub unknown: UnknownCells,
+}
+
+/// map_server's `mode`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum RosMapMode {
+    /// Free, occupied or unknown by the thresholds (the default).
+    #[default]
+    Trinary,
+    /// As trinary, but transparent pixels are unknown and the alpha channel is not averaged.
+    Scale,
+}
+
+/// The YAML file, checked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RosMapYaml {
+    /// The image file name as written (relative to the YAML file unless absolute).
+    pub image: String,
+    /// Metres per pixel.
+    pub resolution: f64,
+    /// `[x, y, yaw]` of the lower-left pixel (metres, radians).
+    pub origin: [f64; 3],
+    /// Whether black and white are swapped.
+    pub negate: bool,
+    /// `p` at or above which a pixel is occupied.
+    pub occupied_thresh: f64,
+    /// `p` at or below which a pixel is free.
+    pub free_thresh: f64,
+    /// The mode.
+    pub mode: RosMapMode,
+}
+
+/// A loaded ROS map: the grid and how its pixels were classified.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RosMap {
+    /// The grid: size of the image, `GridSize` = `resolution`, origin = `origin[0..2]`.
+    pub map: GridMap,
+    /// The YAML it was loaded with.
+    pub yaml: RosMapYaml,
+    /// Pixels classified free.
+    pub free: usize,
+    /// Pixels classified occupied.
+    pub occupied: usize,
+    /// Pixels classified unknown (they are obstacles or free cells in `map`, by the options).
+    pub unknown: usize,
+}
+
+/// `negate`: an integer in map_server (non-zero = true), or a boolean.
+#[derive(Debug)]
+struct Negate(bool);
+
+impl<'de> Deserialize<'de> for Negate {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = Negate;
+            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.write_str("`negate`: 0, 1, true or false")
+            }
+            fn visit_bool<E>(self, v: bool) -> Result<Negate, E> {
+                Ok(Negate(v))
+            }
+            fn visit_i64<E>(self, v: i64) -> Result<Negate, E> {
+                Ok(Negate(v != 0))
+            }
+            fn visit_u64<E>(self, v: u64) -> Result<Negate, E> {
+                Ok(Negate(v != 0))
+            }
+        }
+        d.deserialize_any(Visitor)
+    }
+}
+
+#[derive(Debug, Deserialize)]
+struct RawYaml {
+    image: String,
+    resolution: f64,
+    origin: Vec<f64>,
+    negate: Negate,
+    occupied_thresh: f64,
+    free_thresh: f64,
+    #[serde(default)]
+    mode: Option<String>,
+}
+
+/// Reads and checks a map_server YAML file.
+pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
+    let raw: RawYaml =
+        serde_saphyr::from_str(text).map_err(|e| yaml_err(e.without_snippet().to_string()))?;
+    if raw.image.trim().is_empty() {
+        return Err(yaml_err("`image` is empty"));
+    }
+    if !(raw.resolution.is_finite() && raw.resolution > 0.0) {
+        return Err(yaml_err(format!(
+            "`resolution` {} must be positive and finite",
+            raw.resolution
+        )));
+    }
+    let origin: [f64; 3] = raw.origin.as_slice().try_into().map_err(|_| {
+        yaml_err(format!(
+            "`origin` must have 3 elements [x, y, yaw], not {}",
+            raw.origin.len()
+        ))
+    })?;
+    if origin.iter().any(|v| !v.is_finite()) {
+        return Err(yaml_err(format!("`origin` {origin:?} must be finite")));
+    }
+    for (name, v) in [
+        ("occupied_thresh", raw.occupied_thresh),
+        ("free_thresh", raw.free_thresh),
+    ] {
+        if !(0.0..=1.0).contains(&v) {
+            return Err(yaml_err(format!("`{name}` {v} must lie in [0, 1]")));
+        }
+    }
+    if raw.free_thresh >= raw.occupied_thresh {
+        return Err(yaml_err(format!(
+            "`free_thresh` {} must be below `occupied_thresh` {}",
+            raw.free_thresh, raw.occupied_thresh
+        )));
+    }
+    let mode = match raw.mode.as_deref().map(str::trim) {
+        None | Some("trinary") => RosMapMode::Trinary,
+        Some("scale") => RosMapMode::Scale,
+        Some("raw") => {
+            return Err(yaml_err(
+                "`mode: raw` is not supported: its values are not free/occupied",
+            ));
+        }
+        Some(other) => {
+            return Err(yaml_err(format!(
+                "`mode` `{other}` is not one of trinary, scale"
+            )));
+        }
+    };
+    let negate = raw.negate.0;
+    Ok(RosMapYaml {
+        image: raw.image,
+        resolution: raw.resolution,
+        origin,
+        negate,
+        occupied_thresh: raw.occupied_thresh,
+        free_thresh: raw.free_thresh,
+        mode,
+    })
+}
+
+/// Loads a map from the YAML text and the bytes of the image it names (PGM or PNG, detected
+/// from the bytes).
+pub fn load(
+    yaml_text: &str,
+    image_bytes: &[u8],
+    options: &RosLoadOptions,
+) -> Result<RosMap, MapError> {
+    let yaml = parse_yaml(yaml_text)?;
+    load_image(yaml, image_bytes, options)
+}
+
+/// Loads the image of an already parsed YAML.
+pub fn load_image(
+    yaml: RosMapYaml,
+    image_bytes: &[u8],
+    options: &RosLoadOptions,
+) -> Result<RosMap, MapError> {
+    let reader = image::ImageReader::new(Cursor::new(image_bytes))
+        .with_guessed_format()
+        .map_err(|e| image_err(e.to_string()))?;
+    let kind = match reader.format() {
+        Some(image::ImageFormat::Pnm) => "PGM/PNM",
+        Some(image::ImageFormat::Png) => "PNG",
+        _ => return Err(image_err("neither a PGM nor a PNG image")),
+    };
+    let bad = |e: image::ImageError| image_err(format!("cannot decode the {kind} image: {e}"));
+    let (w, h) = reader.into_dimensions().map_err(bad)?;
+    let (width, height) = (w as usize, h as usize);
+    if width == 0 || height == 0 {
+        return Err(image_err(format!(
+            "image of {width}×{height} pixels is empty"
+        )));
+    }
+    let cells = (width as u64) * (height as u64);
+    if cells > MAX_CELLS as u64 {
+        return Err(MapError::TooLarge {
+            width,
+            height,
+            cells,
+            limit: MAX_CELLS,
+        });
+    }
+    let img = image::load_from_memory(image_bytes).map_err(bad)?;
+    let rule = Rule {
+        negate: yaml.negate,
+        occupied: yaml.occupied_thresh,
+        free: yaml.free_thresh,
+        mode: yaml.mode,
+    };
+    let classes = match &img {
+        image::DynamicImage::ImageLuma8(b) => rule.classify(b.as_raw(), 1, false, 255.0),
+        image::DynamicImage::ImageLumaA8(b) => rule.classify(b.as_raw(), 2, true, 255.0),
+        image::DynamicImage::ImageRgb8(b) => rule.classify(b.as_raw(), 3, false, 255.0),
+        image::DynamicImage::ImageRgba8(b) => rule.classify(b.as_raw(), 4, true, 255.0),
+        image::DynamicImage::ImageLuma16(b) => rule.classify(b.as_raw(), 1, false, 65535.0),
+        image::DynamicImage::ImageLumaA16(b) => rule.classify(b.as_raw(), 2, true, 65535.0),
+        other if other.color().has_alpha() => {
+            rule.classify(other.to_rgba16().as_raw(), 4, true, 65535.0)
+        }
+        other => rule.classify(other.to_rgb16().as_raw(), 3, false, 65535.0),
+    };
+    let (mut free, mut occupied, mut unknown) = (0, 0, 0);
+    let unknown_value = match options.unknown {
+        UnknownCells::Obstacle => 1,
+        UnknownCells::Free => 0,
+    };
+    let mut grid = vec![0u8; width * height];
+    for (row, pixels) in classes.chunks_exact(width).enumerate() {
+        let y = height - 1 - row;
+        for (x, &class) in pixels.iter().enumerate() {
+            grid[x + y * width] = match class {
+                Class::Free => {
+                    free += 1;
+                    0
+                }
+                Class::Occupied => {
+                    occupied += 1;
+                    1
+                }
+                Class::Unknown => {
+                    unknown += 1;
+                    unknown_value
+                }
+            };
+        }
+    }
+    let map = GridMap::new(
+        width,
+        height,
+        yaml.resolution,
+        (yaml.origin[0], yaml.origin[1]),
+        grid,
+    )?;
+    Ok(RosMap {
+        map,
+        yaml,
+        free,
+        occupied,
+        unknown,
+    })
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Class {
+    Free,
+    Occupied,
+    Unknown,
+}
+
+struct Rule {
+    negate: bool,
+    occupied: f64,
+    free: f64,
+    mode: RosMapMode,
+}
+
+impl Rule {
+    /// Classifies interleaved samples (`channels` per pixel, the last one alpha if
+    /// `has_alpha`).
+    fn classify<T: Copy + Into<f64>>(
+        &self,
+        samples: &[T],
+        channels: usize,
+        has_alpha: bool,
+        max: f64,
+    ) -> Vec<Class> {
+        let averaged = if has_alpha && self.mode == RosMapMode::Scale {
+            channels - 1
+        } else {
+            channels
+        };
+        samples
+            .chunks_exact(channels)
+            .map(|px| {
+                if has_alpha && self.mode == RosMapMode::Scale && px[channels - 1].into() < max {
+                    return Class::Unknown;
+                }
+                let sum: f64 = px[..averaged].iter().map(|&s| s.into()).sum();
+                let v = sum / averaged as f64;
+                let p = if self.negate {
+                    v / max
+                } else {
+                    (max - v) / max
+                };
+                if p >= self.occupied {
+                    Class::Occupied
+                } else if p <= self.free {
+                    Class::Free
+                } else {
+                    Class::Unknown
+                }
+            })
+            .collect()
+    }
+}
+
+/// Loads a map from its YAML file; the image is read relative to the YAML file's folder
+/// unless its name is absolute (native only).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn load_file(
+    yaml_path: impl AsRef<std::path::Path>,
+    options: &RosLoadOptions,
+) -> Result<RosMap, MapError> {
+    let yaml_path = yaml_path.as_ref();
+    let text = String::from_utf8(super::read_file(yaml_path)?)
+        .map_err(|e| yaml_err(format!("not UTF-8: {e}")))?;
+    let yaml = parse_yaml(&text)?;
+    let image_path = yaml_path
+        .parent()
+        .unwrap_or_else(|| std::path::Path::new("."))
+        .join(&yaml.image);
+    let bytes = super::read_file(&image_path)?;
+    load_image(yaml, &bytes, options)
+}

@@ -1,0 +1,349 @@
+//! SPEC §2 map formats: rtnav JSON, ROS map_server (YAML + PGM/PNG) and MovingAI
+//! `.map`/`.scen`. Real data from `../shared/data` (read in place), small hand-made inputs,
+//! and bad inputs that must be refused with an error naming the problem.
+
+use rtnav::errors::MapError;
+use rtnav::map::GridMap;
+use rtnav::map::formats::ros::{self, RosLoadOptions, RosMapMode, UnknownCells};
+use rtnav::map::formats::{json, movingai};
+
+const ROS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/rosmaps");
+const FIXTURES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../fixtures/maps");
+
+/// The error's text, for checking that it names the problem.
+fn text(e: MapError) -> String {
+    e.to_string()
+}
+
+fn obstacles(map: &GridMap) -> usize {
+    map.cells().iter().filter(|&&c| c == 1).count()
+}
+
+// ---------------------------------------------------------------- ROS map_server
+
+/// One ROS map and what loading it must give.
+struct RosCase {
+    yaml: &'static str,
+    size: (usize, usize),
+    resolution: f64,
+    origin: (f64, f64),
+    /// (free, occupied, unknown) pixels.
+    counts: (usize, usize, usize),
+}
+
+/// The counts follow the data README's rule; the willow figures were cross-checked once by an
+/// independent Python reading of the PGM (`p = (255 − v)/255`, `p ≥ 0.65` occupied,
+/// `p ≤ 0.196` free): 109 207 + 544 + 234 377 = 566 × 608.
+const ROS_MAPS: [RosCase; 2] = [
+    RosCase {
+        yaml: "nav2_tb3_sandbox/tb3_sandbox.yaml",
+        size: (384, 384),
+        resolution: 0.05,
+        origin: (-10.0, -10.0),
+        counts: (7903, 870, 138_683),
+    },
+    RosCase {
+        yaml: "turtlebot_willow_garage/willow-2010-02-18-0.10.yaml",
+        size: (566, 608),
+        resolution: 0.10,
+        origin: (0.0, 0.0),
+        counts: (109_207, 544, 234_377),
+    },
+];
+
+#[test]
+fn both_ros_maps_load_with_their_yaml_geometry_and_map_server_counts() {
+    for case in ROS_MAPS {
+        let yaml = case.yaml;
+        let (free, occupied, unknown) = case.counts;
+        let path = format!("{ROS}/{yaml}");
+        let r = ros::load_file(&path, &RosLoadOptions::default()).unwrap();
+        assert_eq!((r.map.width(), r.map.height()), case.size, "{yaml}");
+        assert_eq!(r.map.grid_size(), case.resolution, "{yaml}");
+        assert_eq!(r.map.origin(), case.origin, "{yaml}");
+        assert_eq!(r.yaml.origin[2], 0.0, "{yaml}");
+        assert_eq!(r.yaml.mode, RosMapMode::Trinary);
+        assert!(!r.yaml.negate);
+        assert_eq!((r.free, r.occupied, r.unknown), case.counts, "{yaml}");
+        // Unknown cells are obstacles by default ...
+        assert_eq!(obstacles(&r.map), occupied + unknown, "{yaml}");
+        // ... or free if asked.
+        let opts = RosLoadOptions {
+            unknown: UnknownCells::Free,
+        };
+        let r2 = ros::load_file(&path, &opts).unwrap();
+        assert_eq!(obstacles(&r2.map), occupied, "{yaml}");
+        assert_eq!(
+            (r2.free, r2.occupied, r2.unknown),
+            (free, occupied, unknown)
+        );
+        // The bytes API gives the same map.
+        let yaml_text = std::fs::read_to_string(&path).unwrap();
+        let image = std::fs::read(
+            std::path::Path::new(&path)
+                .parent()
+                .unwrap()
+                .join(&r.yaml.image),
+        )
+        .unwrap();
+        assert_eq!(
+            ros::load(&yaml_text, &image, &RosLoadOptions::default()).unwrap(),
+            r
+        );
+    }
+}
+
+const YAML: &str = "image: m.pgm\nresolution: 0.5\norigin: [1.0, 2.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+
+/// A 3 × 2 P5 image: top row black, white, grey 205; bottom row white, white, black.
+fn tiny_pgm() -> Vec<u8> {
+    let mut b = b"P5\n# hand-made\n3 2\n255\n".to_vec();
+    b.extend_from_slice(&[0, 254, 205, 254, 254, 0]);
+    b
+}
+
+#[test]
+fn image_row_zero_is_the_top_of_the_map() {
+    let r = ros::load(YAML, &tiny_pgm(), &RosLoadOptions::default()).unwrap();
+    let m = &r.map;
+    assert_eq!(
+        (m.width(), m.height(), m.grid_size(), m.origin()),
+        (3, 2, 0.5, (1.0, 2.0))
+    );
+    // Cells x fastest from the bottom row (y = 0) = the image's last row.
+    assert_eq!(m.cells(), &[0, 0, 1, 1, 0, 1]);
+    // Grey 205: p = 50/255 = 0.19608 > 0.196, unknown (the README's edge case) → obstacle.
+    assert_eq!((r.free, r.occupied, r.unknown), (3, 2, 1));
+    // World ↔ cell with the origin: the top-left cell's centre.
+    assert_eq!(m.cell_center((0, 1)), (1.25, 2.75));
+    assert_eq!(m.world_to_cell(1.1, 2.9), Some((0, 1)));
+}
+
+#[test]
+fn negate_swaps_black_and_white() {
+    let yaml = YAML.replace("negate: 0", "negate: 1");
+    let r = ros::load(&yaml, &tiny_pgm(), &RosLoadOptions::default()).unwrap();
+    // p = v/255: black free, white (254 → 0.996) occupied, 205 → 0.804 occupied.
+    assert_eq!(r.map.cells(), &[1, 1, 0, 0, 1, 1]);
+    assert_eq!((r.free, r.occupied, r.unknown), (2, 4, 0));
+    let yaml = YAML.replace("negate: 0", "negate: true");
+    assert!(
+        ros::load(&yaml, &tiny_pgm(), &RosLoadOptions::default())
+            .unwrap()
+            .yaml
+            .negate
+    );
+}
+
+/// A 2 × 1 RGBA PNG: an opaque dark pixel and a transparent white one.
+fn tiny_png() -> Vec<u8> {
+    let img = image::RgbaImage::from_raw(2, 1, vec![10, 20, 30, 255, 255, 255, 255, 0]).unwrap();
+    let mut out = Vec::new();
+    img.write_to(&mut std::io::Cursor::new(&mut out), image::ImageFormat::Png)
+        .unwrap();
+    out
+}
+
+#[test]
+fn png_colour_and_alpha_follow_map_server() {
+    let yaml = YAML.replace("m.pgm", "m.png");
+    // Trinary: alpha is averaged in. (10+20+30+255)/4 = 78.75 → p = 0.691 occupied;
+    // (255·3 + 0)/4 = 191.25 → p = 0.25: unknown.
+    let r = ros::load(&yaml, &tiny_png(), &RosLoadOptions::default()).unwrap();
+    assert_eq!((r.free, r.occupied, r.unknown), (0, 1, 1));
+    // Scale: colour only (20 → p = 0.92 occupied), and a transparent pixel is unknown.
+    let yaml = format!("{yaml}mode: scale\n");
+    let r = ros::load(&yaml, &tiny_png(), &RosLoadOptions::default()).unwrap();
+    assert_eq!(r.yaml.mode, RosMapMode::Scale);
+    assert_eq!((r.free, r.occupied, r.unknown), (0, 1, 1));
+}
+
+#[test]
+fn native_loader_reads_the_image_beside_the_yaml() {
+    let r = ros::load_file(format!("{FIXTURES}/tiny.yaml"), &RosLoadOptions::default()).unwrap();
+    assert_eq!((r.map.width(), r.map.height()), (4, 3));
+    assert_eq!((r.free, r.occupied, r.unknown), (9, 2, 1));
+}
+
+fn ros_err(yaml: &str, image: &[u8]) -> String {
+    text(ros::load(yaml, image, &RosLoadOptions::default()).unwrap_err())
+}
+
+#[test]
+fn bad_ros_input_is_refused_with_a_reason() {
+    let mut truncated = tiny_pgm();
+    truncated.truncate(truncated.len() - 2);
+    let e = ros::load(YAML, &truncated, &RosLoadOptions::default()).unwrap_err();
+    assert!(
+        matches!(
+            &e,
+            MapError::Format {
+                format: "ROS map image",
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    assert!(text(e).contains("cannot decode the PGM/PNM image"));
+    let no_resolution = YAML.replace("resolution: 0.5\n", "");
+    assert!(ros_err(&no_resolution, &tiny_pgm()).contains("missing field `resolution`"));
+    let zero = YAML.replace("resolution: 0.5", "resolution: 0");
+    assert!(ros_err(&zero, &tiny_pgm()).contains("`resolution` 0"));
+    let origin2 = YAML.replace("[1.0, 2.0, 0.0]", "[1.0, 2.0]");
+    assert!(ros_err(&origin2, &tiny_pgm()).contains("`origin` must have 3 elements"));
+    let no_negate = YAML.replace("negate: 0\n", "");
+    assert!(ros_err(&no_negate, &tiny_pgm()).contains("negate"));
+    let inverted = YAML.replace("free_thresh: 0.196", "free_thresh: 0.7");
+    assert!(ros_err(&inverted, &tiny_pgm()).contains("`free_thresh` 0.7 must be below"));
+    let raw = format!("{YAML}mode: raw\n");
+    assert!(ros_err(&raw, &tiny_pgm()).contains("mode: raw"));
+    let empty_image = YAML.replace("image: m.pgm", "image: ''");
+    assert!(ros_err(&empty_image, &tiny_pgm()).contains("`image` is empty"));
+    assert_eq!(
+        ros_err(YAML, b"GIF89a...."),
+        "ROS map image: neither a PGM nor a PNG image"
+    );
+    let not_negate = YAML.replace("negate: 0", "negate: maybe");
+    assert!(ros_err(&not_negate, &tiny_pgm()).contains("0, 1, true or false"));
+    assert!(matches!(
+        ros::load_file("/nonexistent/map.yaml", &RosLoadOptions::default()),
+        Err(MapError::Io { .. })
+    ));
+}
+
+// ---------------------------------------------------------------- rtnav JSON
+
+#[test]
+fn json_fixture_reads_top_row_first() {
+    let m = json::load_file(format!("{FIXTURES}/corridor.json")).unwrap();
+    assert_eq!((m.width(), m.height(), m.grid_size()), (10, 5, 0.5));
+    assert_eq!(m.origin(), (-1.0, 0.0));
+    // The first row of the file is the top (y = 4): all wall; the '#' at row 2, column 4
+    // is cell (4, 2).
+    assert!((0..10).all(|x| m.is_obstacle(x, 4)));
+    assert!(m.is_obstacle(4, 2) && !m.is_obstacle(4, 1) && !m.is_obstacle(1, 2));
+}
+
+#[test]
+fn json_round_trips_and_accepts_setmap_order() {
+    let m = GridMap::new(
+        4,
+        3,
+        0.25,
+        (0.5, -2.0),
+        vec![0, 1, 0, 0, 1, 1, 0, 1, 0, 0, 0, 1],
+    )
+    .unwrap();
+    let text = json::to_string(&m);
+    assert!(text.contains("\"...#\""), "{text}"); // top row (y = 2) first
+    assert_eq!(json::load(&text).unwrap(), m);
+    let flat = r#"{"width": 4, "height": 3, "grid_size": 0.25, "origin": [0.5, -2.0],
+                   "cells": [0,1,0,0, 1,1,0,1, 0,0,0,1]}"#;
+    assert_eq!(json::load(flat).unwrap(), m);
+}
+
+#[test]
+fn bad_json_is_refused_with_a_reason() {
+    let e = |s: &str| text(json::load(s).unwrap_err());
+    assert!(
+        e(r#"{"width": 3, "height": 1, "grid_size": 1, "rows": ["..#."]}"#)
+            .contains("rows[0] (y = 0) has 4 cells, expected width 3")
+    );
+    assert!(
+        e(r#"{"width": 2, "height": 1, "grid_size": 1, "rows": [".x"]}"#).contains("column 1: 'x'")
+    );
+    assert!(
+        e(r#"{"width": 2, "height": 2, "grid_size": 1, "rows": [".."]}"#)
+            .contains("`rows` has 1 rows, expected height 2")
+    );
+    assert!(
+        e(r#"{"width": 1, "height": 1, "grid_size": 1, "rows": ["."], "cells": [0]}"#)
+            .contains("not both")
+    );
+    assert!(e(r#"{"width": 1, "height": 1, "grid_size": 1}"#).contains("missing `rows`"));
+    assert!(
+        e(r#"{"width": 1, "height": 1, "grid_size": 1, "rows": ["."], "gridsize": 2}"#)
+            .contains("unknown field `gridsize`")
+    );
+    assert!(
+        e(r#"{"width": 1, "height": 1, "grid_size": 0, "rows": ["."]}"#).contains("GridSize 0")
+    );
+    assert!(
+        e(r#"{"width": 2, "height": 1, "grid_size": 1, "cells": [0]}"#)
+            .contains("MapData has 1 cells, expected")
+    );
+    assert!(
+        e(r#"{"width": 2, "height": 1, "grid_size": 1, "cells": [0, 2]}"#)
+            .contains("MapData[1] = 2")
+    );
+    assert!(matches!(
+        json::load("{\n\"width\": 1,\n oops"),
+        Err(MapError::Format { line: Some(3), .. })
+    ));
+}
+
+// ---------------------------------------------------------------- MovingAI
+
+#[test]
+fn movingai_rows_are_flipped_so_the_map_looks_the_same_way_up() {
+    let m = movingai::load_map("type octile\nheight 2\nwidth 3\nmap\n@.T\n..S\n").unwrap();
+    assert_eq!(
+        (m.width(), m.height(), m.grid_size(), m.origin()),
+        (3, 2, 1.0, (0.0, 0.0))
+    );
+    // MovingAI (0, 0) = '@' is the top-left: GridMap cell (0, 1).
+    assert_eq!(movingai::to_cell(0, 0, 2), Some((0, 1)));
+    assert_eq!(movingai::to_cell(0, 2, 2), None);
+    assert!(m.is_obstacle(0, 1) && m.is_obstacle(2, 1) && !m.is_obstacle(1, 1));
+    assert!((0..3).all(|x| !m.is_obstacle(x, 0)));
+}
+
+#[test]
+fn movingai_map_tolerates_crlf_tabs_blank_lines_and_header_order() {
+    let plain = movingai::load_map("type octile\nheight 2\nwidth 3\nmap\n@.G\nOTW\n").unwrap();
+    let messy = "\r\ntype\toctile\r\nwidth  3\r\n\r\nheight\t2\r\nmap\r\n@.G\r\n\r\nOTW\r\n\r\n";
+    assert_eq!(movingai::load_map(messy).unwrap(), plain);
+}
+
+#[test]
+fn bad_movingai_input_is_refused_with_line_numbers() {
+    let e = |s: &str| text(movingai::load_map(s).unwrap_err());
+    assert_eq!(
+        e("type octile\nheight 2\nwidth 3\nmap\n...\n..\n"),
+        "MovingAI .map (line 6): row 1 has 2 cells, expected width 3"
+    );
+    assert!(e("type octile\nheight 2\nwidth 3\nmap\n...\n....\n").contains("row 1 has 4 cells"));
+    assert!(e("type octile\nheight 2\nwidth 3\nmap\n...\n").contains("only 1 rows"));
+    assert!(e("type octile\nheight 1\nwidth 3\nmap\n...\n...\n").contains("more than the 1 rows"));
+    assert!(e("type octile\nheight 1\nwidth 3\nmap\n.x.\n").contains("(line 5): column 1: 'x'"));
+    assert!(e("type octile\nheight 0\nwidth 3\nmap\n").contains("height must be"));
+    assert!(e("type octile\nwidth 3\nmap\n...\n").contains("missing `height`"));
+    assert!(e("type tile\nheight 1\nwidth 1\nmap\n.\n").contains("`tile` is not `octile`"));
+    assert!(e("height 1\nwidth 1\n.\n").contains("unexpected header line `.`"));
+    assert!(matches!(
+        movingai::load_map("type octile\nheight 5000\nwidth 5000\nmap\n"),
+        Err(MapError::TooLarge { .. })
+    ));
+}
+
+#[test]
+fn movingai_scen_reads_both_versions_tabs_and_spaces() {
+    let tabs = "version 1\n0\tmaps/dao/arena.map\t49\t49\t1\t11\t1\t12\t1\n";
+    let spaces = "version 1.0\r\n\r\n3 arena.map 49 49 1 11 1 12 1.5\r\n";
+    let a = movingai::load_scen(tabs).unwrap();
+    let b = movingai::load_scen(spaces).unwrap();
+    assert_eq!(a.len(), 1);
+    assert_eq!(a[0].map, "maps/dao/arena.map");
+    assert_eq!(
+        (a[0].start, a[0].goal, a[0].optimal_length),
+        ((1, 11), (1, 12), 1.0)
+    );
+    // Converted like the map: y counted from the bottom.
+    assert_eq!((a[0].start_cell(), a[0].goal_cell()), ((1, 37), (1, 36)));
+    assert_eq!((b[0].bucket, b[0].optimal_length), (3, 1.5));
+    let e = |s: &str| text(movingai::load_scen(s).unwrap_err());
+    assert!(e("version 2\n").contains("expected `version 1`"));
+    assert!(e("version 1\n0 a.map 4 4 1 1 1\n").contains("(line 2): expected 9 fields, found 7"));
+    assert!(e("version 1\n0 a.map 4 4 4 1 1 1 1\n").contains("start (4, 1) is outside"));
+    assert!(e("version 1\n0 a.map 4 4 1 1 1 1 x\n").contains("optimal length `x`"));
+}
