@@ -353,6 +353,13 @@ test('a bad map file is refused with the reason; the current map stays', { timeo
   await page.setInputFiles('#map-file', { name: 'map.pgm', mimeType: 'image/x-portable-graymap', buffer: Buffer.from('P5 1 1 255\n\0') });
   await page.waitForFunction(() => document.getElementById('notice-text').textContent.includes('needs its .yaml'), null, WAIT);
   assert.deepEqual(await mapInfo(page), before);
+  // A ROS map (YAML and image picked together) and a MovingAI map load.
+  await page.setInputFiles('#map-file', [join(REPO, 'fixtures/maps/tiny.yaml'), join(REPO, 'fixtures/maps/tiny.pgm')]);
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'tiny.yaml', null, WAIT);
+  assert.equal((await mapInfo(page)).grid_size, 0.25);
+  await page.setInputFiles('#map-file', join(REPO, '..', 'shared', 'data', 'movingai', 'dao', 'arena.map'));
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'arena.map', null, WAIT);
+  assert.deepEqual(await mapInfo(page).then((m) => [m.width, m.height, m.grid_size]), [49, 49, 1]);
   // A good map file loads, with the planners Active and no goal yet.
   const rows = ['########', '#......#', '#......#', '#......#', '########'];
   await page.setInputFiles('#map-file', {

@@ -208,6 +208,8 @@ export function createStage(wrap, view, overlay, hint, app) {
   overlay.addEventListener('pointermove', (e) => {
     const p = toCanvas(e);
     hover = p;
+    // The cell under the mouse, for whoever listens (an inspector).
+    app.emit('hover', map ? demo.pixel_to_cell(p[0], p[1]) ?? null : null);
     if (drag && (drag.tool === 'paint' || drag.tool === 'erase')) paintSegment(drag.p, p);
     if (drag) drag.p = p;
     drawOverlay();
@@ -215,6 +217,7 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   overlay.addEventListener('pointerleave', () => {
     hover = null;
+    app.emit('hover', null);
     drawOverlay();
   });
 
