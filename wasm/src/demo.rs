@@ -232,8 +232,9 @@ impl Inner {
         self.resume_asked = true;
         let direction = s.direction();
         let text = match self.system.set_goal(goal, direction) {
-            Ok(()) => "DriveControl had no path after its activation: the goal was sent again"
-                .to_owned(),
+            Ok(()) => {
+                "DriveControl had no path after its activation: the goal was sent again".to_owned()
+            }
             Err(e) => format!("DriveControl has no path; sending the goal again was refused: {e}"),
         };
         self.notes.push(EventView {
