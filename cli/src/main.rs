@@ -1,2 +1,277 @@
-//! `rtnav`: the headless runner.
-fn main() {}
+//! `rtnav`: the headless runner (SPEC §0, §6). Runs a scenario to its outcome and prints a
+//! summary, writes the final frame as PNG and the telemetry as CSV; or draws the initial
+//! plan of a scenario without driving.
+//!
+//! ```text
+//! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
+//! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
+//! ```
+//!
+//! Scenario files name their maps relative to the project's root; the root is found by
+//! walking up from the scenario file to the first folder where the map exists (or given
+//! with `--root`).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+use rtnav::render::Renderer;
+use rtnav::system::{DirResolver, FileResolver, OutcomeKind, Scenario, ScenarioRun, System};
+
+#[derive(Debug, Parser)]
+#[command(
+    name = "rtnav",
+    version,
+    about = "Run and draw rtnav scenarios headlessly"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run a scenario to its outcome and print a summary.
+    Run {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// Write the final frame here (PNG).
+        #[arg(long)]
+        png: Option<PathBuf>,
+        /// Write the telemetry here (CSV, one row per sample).
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Stop at this simulated time [s] instead of the scenario's time limit.
+        #[arg(long)]
+        until: Option<f64>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+        /// Print every event.
+        #[arg(long)]
+        events: bool,
+        /// Frame size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "1200x800", value_parser = parse_size)]
+        size: (u32, u32),
+    },
+    /// Draw the initial plan of a scenario (global route, local plan, potential field)
+    /// without driving.
+    Render {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// Write the frame here (PNG).
+        #[arg(long)]
+        png: PathBuf,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+        /// Frame size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "1200x800", value_parser = parse_size)]
+        size: (u32, u32),
+    },
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once('x')
+        .ok_or_else(|| format!("`{s}`: expected WIDTHxHEIGHT, e.g. 1200x800"))?;
+    let n = |t: &str| t.trim().parse::<u32>().map_err(|e| format!("`{s}`: {e}"));
+    Ok((n(w)?, n(h)?))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Run {
+            scenario,
+            png,
+            csv,
+            until,
+            root,
+            events,
+            size,
+        } => run(
+            &scenario,
+            png.as_deref(),
+            csv.as_deref(),
+            until,
+            root,
+            events,
+            size,
+        ),
+        Command::Render {
+            scenario,
+            png,
+            root,
+            size,
+        } => render(&scenario, &png, root, size),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("rtnav: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+type CliResult<T> = Result<T, String>;
+
+fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
+    let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
+    let root = match root {
+        Some(r) => r,
+        None => find_root(path, &scenario),
+    };
+    Ok((scenario, DirResolver::new(root)))
+}
+
+/// The first ancestor of the scenario file (then the working folder) in which the
+/// scenario's map file exists.
+fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
+    let map = match &scenario.map {
+        rtnav::system::MapSource::Json { path }
+        | rtnav::system::MapSource::Movingai { path, .. } => path.clone(),
+        rtnav::system::MapSource::Ros { yaml, .. } => yaml.clone(),
+    };
+    let start = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    start
+        .ancestors()
+        .skip(1)
+        .find(|dir| dir.join(&map).exists())
+        .map(Path::to_path_buf)
+        .unwrap_or_else(|| PathBuf::from("."))
+}
+
+fn write_png(system: &mut System, size: (u32, u32), path: &Path) -> CliResult<()> {
+    let mut renderer = Renderer::new(size.0, size.1).map_err(|e| e.to_string())?;
+    let scene = system.scene().ok_or_else(|| "no map to draw".to_owned())?;
+    let frame = renderer.render(&scene).map_err(|e| e.to_string())?;
+    let bytes = frame.encode_png().map_err(|e| e.to_string())?;
+    std::fs::write(path, bytes).map_err(|e| format!("cannot write `{}`: {e}", path.display()))
+}
+
+fn run(
+    path: &Path,
+    png: Option<&Path>,
+    csv: Option<&Path>,
+    until: Option<f64>,
+    root: Option<PathBuf>,
+    print_events: bool,
+    size: (u32, u32),
+) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let resolver: &dyn FileResolver = &resolver;
+    let mut run = ScenarioRun::new(&scenario, resolver).map_err(|e| e.to_string())?;
+    if let Some(t) = until {
+        run.set_limit(t).map_err(|e| e.to_string())?;
+    }
+    let limit_ms = (run.limit() * 1000.0) as u64;
+    let mut rows = String::new();
+    let mut seq = 0u64;
+    if csv.is_some() {
+        rows.push_str(rtnav::system::TelemetrySample::CSV_HEADER);
+        rows.push('\n');
+    }
+    let bar = ProgressBar::hidden();
+    let started = Instant::now();
+    let mut shown = false;
+    let mut printed = 0u64;
+    loop {
+        let done = run.advance(1000).map_err(|e| e.to_string())?.is_some();
+        let system = run.system();
+        if csv.is_some() {
+            for s in system.telemetry().since(seq) {
+                s.write_csv_row(&mut rows);
+                rows.push('\n');
+            }
+            seq = system.telemetry().total();
+        }
+        if print_events {
+            let events = system.events();
+            let new = (system.event_count() - printed).min(events.len() as u64) as usize;
+            for e in events.iter().skip(events.len() - new) {
+                bar.suspend(|| println!("{e}"));
+            }
+            printed = system.event_count();
+        }
+        if !shown && started.elapsed() > Duration::from_millis(500) {
+            // A long run: show progress in simulated seconds.
+            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            bar.set_length(limit_ms);
+            bar.set_style(
+                ProgressStyle::with_template(
+                    "{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} ms simulated {msg}",
+                )
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+            );
+            shown = true;
+        }
+        bar.set_position(system.time_ns() / 1_000_000);
+        if done {
+            break;
+        }
+    }
+    bar.finish_and_clear();
+    let wall = started.elapsed().as_secs_f64();
+    let report = run.report();
+    println!("{report}");
+    let sim = report.sim_time;
+    println!(
+        "wall time       {wall:.3} s (real-time factor {:.0}×)",
+        if wall > 0.0 {
+            sim / wall
+        } else {
+            f64::INFINITY
+        }
+    );
+    let stopped_early = until.is_some() && report.outcome.kind == OutcomeKind::TimeLimit;
+    let expectation = if stopped_early {
+        println!("expectation     not checked: stopped by --until");
+        Ok(())
+    } else {
+        report.check(&scenario.expect)
+    };
+    match &expectation {
+        Ok(()) if stopped_early => {}
+        Ok(()) => println!("expectation     met ({:?})", scenario.expect.outcome),
+        Err(problems) => println!("expectation     NOT met: {problems}"),
+    }
+    if let Some(p) = csv {
+        std::fs::write(p, &rows).map_err(|e| format!("cannot write `{}`: {e}", p.display()))?;
+        println!("telemetry       {} ({} samples)", p.display(), seq);
+    }
+    if let Some(p) = png {
+        write_png(run.system_mut(), size, p)?;
+        println!("frame           {}", p.display());
+    }
+    Ok(if expectation.is_ok() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let mut system = System::from_scenario(&scenario, &resolver).map_err(|e| e.to_string())?;
+    system.set_full_field(true);
+    let planned = system.preview(5.0).map_err(|e| e.to_string())?;
+    for e in system.events() {
+        if matches!(e.kind, rtnav::system::EventKind::PlanningFailed { .. }) {
+            println!("{e}");
+        }
+    }
+    write_png(&mut system, size, png)?;
+    println!(
+        "{}: {} → {}",
+        scenario.name,
+        if planned { "planned" } else { "no plan" },
+        png.display()
+    );
+    Ok(ExitCode::SUCCESS)
+}

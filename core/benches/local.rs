@@ -2,11 +2,16 @@
 //! on a 1000 × 1000 map of 0.05 m cells with some obstacles, default parameters (000 §4.2:
 //! RouteRemakeDistance 10 m, dmin 0.5 m, PostureConsiderationLevel 85 %).
 //!
+//! Also the willow garage ROS map (`../shared/data/rosmaps`, 566 × 608 at 0.10 m): a real
+//! building, with the held path from GlobalPathPlanning's A*.
+//!
 //! Run: `cargo bench -p rtnav --bench local`. Goal: field + path ≤ 20 ms natively.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use rtnav::global::AStar;
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::local::{FieldExtent, LocalPlanner, PlanParams, PlanRequest};
+use rtnav::map::formats::ros::{self, RosLoadOptions};
 use rtnav::map::{Cell, GridMap};
 
 const N: usize = 1000;
@@ -84,5 +89,49 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+/// The willow garage map with the start and goal of `fixtures/scenarios/willow_garage.json`.
+fn bench_willow(c: &mut Criterion) {
+    let yaml = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.yaml"
+    );
+    let map = ros::load_file(yaml, &RosLoadOptions::default())
+        .expect("the willow garage map loads")
+        .map;
+    let params = PlanParams::default();
+    let (start, goal) = (
+        Pose::new(36.25, 7.95, core::f64::consts::FRAC_PI_2),
+        Pose::new(26.05, 5.65, core::f64::consts::PI),
+    );
+    let cell = |p: &Pose| map.world_to_cell(p.x, p.y).expect("inside the map");
+    let path = AStar::new(&map, params.dmin)
+        .expect("A* on the map")
+        .plan(cell(&start), cell(&goal))
+        .expect("a global path")
+        .cells;
+    let mut planner = LocalPlanner::new();
+    let mut group = c.benchmark_group("local_willow_garage");
+    group.sample_size(10);
+    group.measurement_time(std::time::Duration::from_secs(3));
+    for (name, extent) in [
+        ("field_path", FieldExtent::UntilCurrent),
+        ("full_field_path", FieldExtent::Full),
+    ] {
+        let req = PlanRequest {
+            held_path: &path,
+            match_from: 0,
+            current: start,
+            goal,
+            direction: Direction::Forward,
+            params,
+            extent,
+        };
+        group.bench_function(name, |b| {
+            b.iter(|| planner.plan(&map, &req).expect("a plan"));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, bench_willow);
 criterion_main!(benches);

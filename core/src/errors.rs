@@ -37,6 +37,11 @@ pub enum Error {
     /// A global plan that cannot be made (SPEC §5 "GlobalPathPlanning").
     #[error(transparent)]
     GlobalPlanning(#[from] GlobalPlanningError),
+
+    // --- system: the whole system, scenarios, trace ---
+    /// A request to the whole system or a scenario that cannot be carried out (SPEC §0, §6).
+    #[error(transparent)]
+    System(#[from] SystemError),
 }
 
 /// `Result` with this crate's [`Error`].
@@ -638,4 +643,74 @@ pub enum GlobalPlanningError {
         /// The value given.
         value: f64,
     },
+}
+
+// --- system: the whole system, scenarios, trace (SPEC §0, §6) ---
+
+/// Errors of the whole system (`crate::system`): GUI requests that cannot be carried out,
+/// and scenario files that cannot be used. Nothing held changes when one is returned.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SystemError {
+    /// A request that needs a map before one is loaded.
+    #[error("{call}: no map is loaded")]
+    NoMap {
+        /// The request, e.g. `MapUpdate`.
+        call: &'static str,
+    },
+    /// A component name that is not one of the system's.
+    #[error("no component named `{name}` (expected one of {expected})")]
+    UnknownComponent {
+        /// The name given.
+        name: String,
+        /// The names known.
+        expected: String,
+    },
+    /// A component without configuration parameters.
+    #[error("component `{component}` has no configuration parameters")]
+    NoConfiguration {
+        /// The component.
+        component: String,
+    },
+    /// A request that places the robot, made while it drives.
+    #[error("{call}: the robot is driving (deactivate the physics first, or set only a new goal)")]
+    Driving {
+        /// The request.
+        call: &'static str,
+    },
+    /// A new goal without a start: the robot has not been placed yet.
+    #[error("{call}: no start pose yet (set start and goal first)")]
+    NoStart {
+        /// The request.
+        call: &'static str,
+    },
+    /// A number that must be finite (and, for times, non-negative) is not.
+    #[error("{what} = {value} must be finite{}", if *non_negative { " and ≥ 0" } else { "" })]
+    BadNumber {
+        /// What it is, e.g. `run_until seconds`.
+        what: &'static str,
+        /// The value given.
+        value: f64,
+        /// Whether it must also be ≥ 0.
+        non_negative: bool,
+    },
+    /// A scenario file that cannot be read or used.
+    #[error("scenario `{scenario}`: {reason}")]
+    Scenario {
+        /// The scenario's name or file.
+        scenario: String,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A file a scenario names that the resolver cannot supply.
+    #[error("cannot read `{path}`: {reason}")]
+    File {
+        /// The path as the scenario gives it.
+        path: String,
+        /// Why.
+        reason: String,
+    },
+    /// A telemetry history of capacity zero.
+    #[error("telemetry capacity must be at least 1")]
+    ZeroCapacity,
 }

@@ -24,3 +24,10 @@ pub use heartbeat::{Heartbeat, HeartbeatParams};
 // --- maps: GlobalPathPlanning ---
 mod global_path_planning;
 pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams};
+
+// --- system: MapBuilder / MapMaintenance (SPEC §5) ---
+mod map_builder;
+mod map_maintenance;
+
+pub use map_builder::{MapBuilder, SetMapMessage};
+pub use map_maintenance::{MapMaintenance, MapUpdate};

@@ -36,6 +36,7 @@ pub struct PhysicsSim {
     applied: [f64; 2],
     last_error: Option<MotionError>,
     last_bump: Option<BumpReport>,
+    fail_on_bump: bool,
 }
 
 impl PhysicsSim {
@@ -51,6 +52,7 @@ impl PhysicsSim {
             applied: [0.0; 2],
             last_error: None,
             last_bump: None,
+            fail_on_bump: false,
         })
     }
 
@@ -94,6 +96,19 @@ impl PhysicsSim {
     /// The most recent bump.
     pub fn last_bump(&self) -> Option<&BumpReport> {
         self.last_bump.as_ref()
+    }
+
+    /// Whether a bump also fails `on_execute` with the bump report as the reason, so the
+    /// component goes to Error (the whole system's "a bump stops the robot and puts the
+    /// system in Error", SPEC §5 Physics; used by `system::System`). Off by default: the
+    /// report is then only written to `bump`.
+    pub fn set_fail_on_bump(&mut self, fail: bool) {
+        self.fail_on_bump = fail;
+    }
+
+    /// Whether a bump fails `on_execute` ([`PhysicsSim::set_fail_on_bump`]).
+    pub fn fails_on_bump(&self) -> bool {
+        self.fail_on_bump
     }
 
     fn steps(tick: &Tick) -> Result<u64, MotionError> {
@@ -182,7 +197,12 @@ impl Component for PhysicsSim {
             match self.physics.step(self.applied) {
                 Ok(Some(report)) => {
                     self.bump.write(report.clone());
-                    self.last_bump = Some(report);
+                    self.last_bump = Some(report.clone());
+                    if self.fail_on_bump {
+                        self.applied = [0.0; 2];
+                        self.publish();
+                        return Err(ComponentError::new(format!("bump: {report}")));
+                    }
                 }
                 Ok(None) => {}
                 Err(e) => {
