@@ -1,45 +1,98 @@
-// rtnav page entry: loads the wasm module, creates the host, mounts the panels, runs the
-// clock. No simulation logic lives here: the page owns the clock (requestAnimationFrame)
-// and the DOM; Rust owns every state (SPEC §1, §6).
-import init, { ComponentHost } from './pkg/rtnav_wasm.js';
+// rtnav page entry: loads the wasm module, creates the Demo handle (the whole system and
+// its renderer, in Rust memory), mounts the stage and the panels, loads the default
+// scenario, runs the clock. No simulation logic lives here: the page owns the clock
+// (requestAnimationFrame), the DOM and the mouse; Rust owns every state (SPEC §1, §6).
+import init, { Demo } from './pkg/rtnav_wasm.js';
 import { createCrashGuard } from './js/crash.js';
 import { startLoop } from './js/loop.js';
-import { createDiagram } from './js/panels/diagram.js';
-import { createLifecyclePanel } from './js/panels/lifecycle.js';
-import { createConfigPanel } from './js/panels/config.js';
+import { createNotice } from './js/notice.js';
+import { createStage } from './js/stage.js';
+import { createScenarios } from './js/scenarios.js';
+import { createToolbar } from './js/panels/toolbar.js';
+import { createRtcPanel } from './js/panels/rtc.js';
 import { createEventLog } from './js/panels/event-log.js';
+import { createTelemetry } from './js/panels/telemetry.js';
 
 const $ = (id) => document.getElementById(id);
 
-async function boot() {
-  await init();
-  const guard = createCrashGuard($('crash'), $('crash-message'));
-  const host = guard.call(() => new ComponentHost());
-  if (!host) return;
+/** How many frame times the page keeps (for the end-to-end test's median). */
+const FRAME_TIMES = 600;
 
-  const panels = [
-    createDiagram($('diagram'), host),
-    createLifecyclePanel($('lifecycle-panel'), host, guard),
-    createConfigPanel($('config-panel'), host, guard),
-    createEventLog($('log-panel'), host, guard),
-  ];
+async function boot() {
+  const wasm = await init();
+  const guard = createCrashGuard($('crash'), $('crash-message'));
+  const demo = guard.call(() => new Demo(640, 400));
+  if (!demo) return;
+
+  // What every module shares: the handle, the crash guard, the page's own settings, and
+  // `attempt` — a request whose refusal (an error value from Rust) is shown, not thrown.
+  const listeners = new Map();
+  const app = {
+    demo,
+    guard,
+    memory: wasm.memory,
+    ui: { tool: 'goal', backward: false, brush: 1, pendingStart: null },
+    on(name, fn) {
+      if (!listeners.has(name)) listeners.set(name, []);
+      listeners.get(name).push(fn);
+    },
+    emit(name, ...args) {
+      for (const fn of listeners.get(name) ?? []) fn(...args);
+    },
+    attempt(fn) {
+      try {
+        return { ok: true, value: guard.call(fn) };
+      } catch (e) {
+        return { ok: false, error: e?.message ?? String(e) };
+      }
+    },
+  };
+  app.notice = createNotice($('notice'), $('notice-text'), $('notice-close'));
+  app.log = createEventLog($('log-panel'), app);
+  app.stage = createStage($('canvas-wrap'), $('view'), $('overlay'), $('tool-hint'), app);
+  const toolbar = createToolbar($('toolbar'), $('clock-controls'), app);
+  const rtc = createRtcPanel($('rtc-panel'), app);
+  const telemetry = createTelemetry($('telemetry'), app);
+  const scenarios = createScenarios(
+    { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
+      description: $('about-description'), lesson: $('about-lesson') },
+    app,
+  );
   const simTime = $('sim-time');
 
+  const frameTimes = [];
   const loop = startLoop((elapsedMs) => {
-    guard.call(() => host.step(elapsedMs));
+    app.stage.flushPaint();
+    const t0 = performance.now();
+    guard.call(() => demo.step(elapsedMs));
+    app.stage.draw();
+    const t1 = performance.now();
     if (guard.crashed) return false;
-    simTime.textContent = `${(host.time_ms() / 1000).toFixed(3)} s`;
-    for (const p of panels) p.update();
+    frameTimes.push(t1 - t0);
+    if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
+    simTime.textContent = `${demo.time_s().toFixed(3)} s`;
+    rtc.update();
+    app.log.update();
+    telemetry.update();
+    toolbar.update();
     return !guard.crashed;
   });
   guard.onCrash(() => loop.stop());
 
-  // For the console and the end-to-end test: the host, and a way to prove that a panic
-  // is shown instead of freezing the page.
+  // For the console and the end-to-end test.
   window.rtnav = {
-    host,
-    debugPanic: () => guard.call(() => host.debug_panic()),
+    demo,
+    app,
+    scenarios,
+    /** Frame times (step + render + blit) of the last frames, ms. */
+    frameTimes: () => frameTimes.slice(),
+    clearFrameTimes: () => { frameTimes.length = 0; },
+    /** Fixes the frame size (pixels) instead of fitting the canvas to the page. */
+    setFrameSize: (w, h) => app.stage.setFixedSize(w, h),
+    debugPanic: () => guard.call(() => demo.debug_panic()),
   };
+
+  await scenarios.loadDefault();
   document.body.dataset.ready = 'true';
 }
 
@@ -47,7 +100,7 @@ boot().catch((e) => {
   const box = $('crash');
   box.querySelector('h2').textContent = 'The demo could not start';
   box.querySelector('p').textContent =
-    'Could not load the WebAssembly module. Build it with `cargo xtask demo`.';
+    'Could not load the WebAssembly module or the scenarios. Build them with `cargo xtask demo`.';
   $('crash-message').textContent = String(e && e.stack ? e.stack : e);
   box.hidden = false;
 });

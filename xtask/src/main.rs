@@ -7,11 +7,12 @@
 //!
 //! ```text
 //! cargo xtask demo [--port N]     build the wasm and serve web/ (default http://127.0.0.1:8080/)
-//! cargo xtask build-wasm [--dev]  build the wasm into web/pkg
-//! cargo xtask serve [--port N]    serve web/ as it is
+//! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
+//! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask test                every check CI runs, with a summary
 //! ```
 
+mod fixtures;
 mod serve;
 mod test;
 mod tools;
@@ -30,8 +31,9 @@ usage: cargo xtask <command>
 
 commands:
   demo [--port N]      build the wasm and serve the page (default port 8080)
-  build-wasm [--dev]   build rtnav-wasm into web/pkg (release unless --dev)
-  serve [--port N]     serve web/ without building
+  build-wasm [--dev]   build rtnav-wasm into web/pkg (release unless --dev) and copy
+                       the scenario fixtures and their maps into web/fixtures
+  serve [--port N]     copy the fixtures and serve web/ without building
   test                 cargo test, clippy (native and wasm32), rustfmt, the wasm tests
                        under Node and the browser end-to-end tests
   help                 this text";
@@ -66,7 +68,11 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             };
             wasm::build(profile)?;
         }
-        "serve" => serve::serve_forever(port_option(rest)?)?,
+        "serve" => {
+            let port = port_option(rest)?;
+            fixtures::stage()?;
+            serve::serve_forever(port)?;
+        }
         "test" => {
             if !rest.is_empty() {
                 return Err(format!("test: unexpected arguments {rest:?}").into());

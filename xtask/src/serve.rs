@@ -126,7 +126,8 @@ fn content_type(path: &Path) -> &'static str {
         "png" => "image/png",
         "svg" => "image/svg+xml",
         "ico" => "image/x-icon",
-        "txt" | "md" | "conf" | "ts" => "text/plain; charset=utf-8",
+        "txt" | "md" | "conf" | "ts" | "yaml" | "yml" => "text/plain; charset=utf-8",
+        "pgm" => "image/x-portable-graymap",
         _ => "application/octet-stream",
     }
 }

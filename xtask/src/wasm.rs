@@ -1,4 +1,5 @@
-//! `cargo xtask build-wasm`: `rtnav-wasm` → `web/pkg/` (`rtnav_wasm.js` + `rtnav_wasm_bg.wasm`).
+//! `cargo xtask build-wasm`: `rtnav-wasm` → `web/pkg/` (`rtnav_wasm.js` + `rtnav_wasm_bg.wasm`),
+//! then the scenario fixtures → `web/fixtures/` (`crate::fixtures`).
 //!
 //! `wasm-pack` runs with `--mode no-install`, so it uses the `wasm-bindgen` we installed and
 //! never downloads one. Its `wasm-opt` step is off (`wasm/Cargo.toml`): it would download
@@ -51,5 +52,5 @@ pub fn build(profile: Profile) -> Result {
     });
     run(&mut c)?;
     println!("xtask: built {}", out.display());
-    Ok(())
+    crate::fixtures::stage()
 }

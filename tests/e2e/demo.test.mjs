@@ -1,0 +1,423 @@
+// End-to-end: Debian's Chromium (driven by playwright-core, never a downloaded browser)
+// against the page served by `cargo xtask test` at $RTNAV_URL.
+//
+// Proves, through the page's own canvas, mouse, buttons and readouts: the default scenario
+// drawn on open; Activate all → the robot drives to the goal; an obstacle painted on the
+// path while Active → a replan around it; a goal dropped in an obstacle → refused, the old
+// goal and path kept; Inject fault → Error with its reason → Reset → Inactive → Activate; a
+// bump → Error → Reset all; a bad map file → refused, the map kept; the frame budget at
+// 1280×800 (printed); a Rust panic shown as a crash.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdtemp, mkdir, rm, copyFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const URL = process.env.RTNAV_URL ?? 'http://127.0.0.1:8080/';
+const CHROMIUM = process.env.RTNAV_CHROMIUM ?? '/usr/bin/chromium';
+const HERE = dirname(fileURLToPath(import.meta.url));
+const REPO = join(HERE, '..', '..');
+const ARGS = [
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-quic',
+];
+const WAIT = { timeout: 20_000 };
+const COLOURS = { Inactive: 'rgb(0, 0, 255)', Active: 'rgb(0, 255, 0)', Error: 'rgb(255, 0, 0)' };
+/** The frame budget of one frame (simulation + render + blit), ms. */
+const BUDGET_MS = 8;
+
+let profile;
+let context;
+
+before(async () => {
+  profile = await mkdtemp(join(tmpdir(), 'rtnav-e2e-profile-'));
+  context = await chromium.launchPersistentContext(profile, {
+    executablePath: CHROMIUM,
+    headless: true,
+    args: ARGS,
+    viewport: { width: 1280, height: 800 },
+  });
+});
+
+after(async () => {
+  await context?.close();
+  if (profile) await rm(profile, { recursive: true, force: true });
+});
+
+/** A fresh page, loaded and ready; `problems` collects page errors and console errors. */
+async function open() {
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('console', (m) => {
+    if (m.type() === 'error') problems.push(`console.error: ${m.text()}`);
+  });
+  await page.goto(URL, { waitUntil: 'domcontentloaded', timeout: 60_000 });
+  await page.waitForSelector('body[data-ready="true"], #crash:not([hidden])', { timeout: 60_000 });
+  if (await page.isVisible('#crash')) {
+    assert.fail(`the page did not start: ${await page.innerText('#crash')}\n${problems.join('\n')}`);
+  }
+  return { page, problems };
+}
+
+/** Saves a screenshot in tests/e2e/out/ (and docs/ with UPDATE_SCREENSHOTS=1). */
+async function screenshot(page, name) {
+  await mkdir(join(HERE, 'out'), { recursive: true });
+  const shot = join(HERE, 'out', name);
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.screenshot({ path: shot });
+  if (process.env.UPDATE_SCREENSHOTS === '1') {
+    await mkdir(join(REPO, 'docs'), { recursive: true });
+    await copyFile(shot, join(REPO, 'docs', name));
+  }
+}
+
+const json = (page, call) => page.evaluate((c) => JSON.parse(window.rtnav.demo[c]()), call);
+const plan = (page) => json(page, 'plan_json');
+const telemetry = (page) => json(page, 'telemetry_json');
+const mapInfo = (page) => json(page, 'map_json');
+
+/** Page coordinates of the centre of map cell (x, y). */
+function cellToPage(page, [x, y]) {
+  return page.evaluate(([x, y]) => {
+    const m = JSON.parse(window.rtnav.demo.map_json());
+    const wx = m.origin[0] + (x + 0.5) * m.grid_size;
+    const wy = m.origin[1] + (y + 0.5) * m.grid_size;
+    const [px, py] = window.rtnav.demo.world_to_pixel(wx, wy);
+    const c = document.getElementById('overlay');
+    const r = c.getBoundingClientRect();
+    return [r.left + (px * r.width) / c.width, r.top + (py * r.height) / c.height];
+  }, [x, y]);
+}
+
+/** Waits until component `name`'s row shows `state`, in the RT System Editor's colour. */
+async function expectState(page, name, state) {
+  const row = `#components li[data-component="${name}"]`;
+  await page.waitForSelector(`${row}[data-state="${state}"]`, WAIT);
+  const badge = await page.$eval(`${row} .state-badge`, (e) => [e.textContent, getComputedStyle(e).backgroundColor]);
+  assert.deepEqual(badge, [state, COLOURS[state]], `${name} in ${state}`);
+}
+
+async function activateAll(page) {
+  await page.click('#activate-all');
+  await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
+}
+
+/** The log entries of `kind`, oldest first. */
+const logged = (page, kind) =>
+  page.$$eval(`#events li[data-kind="${kind}"] .text`, (items) => items.map((i) => i.textContent).reverse());
+
+test('the default scenario is drawn, and Activate all drives the robot to the goal', { timeout: 120_000 }, async () => {
+  const { page, problems } = await open();
+  assert.equal(await page.inputValue('#scenario'), 'open_field');
+  assert.match(await page.textContent('#about-title'), /open field/);
+  // Drawn: map, field, paths, robot — many colours on the canvas, nothing transparent.
+  const drawn = await page.evaluate(() => {
+    const c = document.getElementById('view');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const colours = new Set();
+    for (let i = 0; i < d.length; i += 16) colours.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+    return { colours: colours.size, opaque: d.every((v, i) => i % 4 !== 3 || v === 255) };
+  });
+  assert.ok(drawn.opaque, 'the frame is opaque');
+  assert.ok(drawn.colours > 50, `the frame shows a drawing (${drawn.colours} colours)`);
+  const p = await plan(page);
+  assert.deepEqual(p.goal, { x: 23, y: 15.5, theta_deg: 90 });
+  assert.ok(p.global_path.length > 20 && p.local_path.length > 20 && p.control_points.length > 2);
+  // The planners run, the robot waits: Partial.
+  for (const name of ['MapBuilder', 'MapMaintenance', 'GlobalPathPlanning', 'LocalPathPlanning']) {
+    await expectState(page, name, 'Active');
+  }
+  for (const name of ['PhysicsSim', 'MotorControl', 'Localization', 'DriveControl']) {
+    await expectState(page, name, 'Inactive');
+  }
+  assert.equal(await page.textContent('#system-state'), 'Partial · 4 of 8 Active');
+  assert.deepEqual(await logged(page, 'GlobalPlan'), ['global plan: 206 cells, 25.88 m']);
+
+  await activateAll(page);
+  for (const name of ['PhysicsSim', 'MotorControl', 'Localization', 'DriveControl']) {
+    await expectState(page, name, 'Active');
+  }
+  // The README's screenshot: on the way, paused.
+  await page.selectOption('#speed', '4');
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 11, null, WAIT);
+  await page.click('#pause');
+  await page.waitForTimeout(200);
+  await screenshot(page, 'screenshot-demo.png');
+  await page.click('#pause');
+  await page.selectOption('#speed', '16');
+  await page.waitForSelector('#telemetry[data-arrived="true"]', { timeout: 60_000 });
+  const t = await telemetry(page);
+  assert.ok(t.distance_to_goal < 0.1, `arrived ${t.distance_to_goal} m from the goal`);
+  assert.equal(t.bumps, 0);
+  assert.equal(await page.textContent('#telemetry dd[data-key="status"]'), 'Arrived ✓');
+  const arrived = await logged(page, 'Arrived');
+  assert.equal(arrived.length, 1);
+  assert.match(arrived[0], /^arrived at \(2[23]\.\d{3}, 15\.\d{3}, \d+\.\d°\): 0\.0\d\d m and \d+\.\d\d° from the goal$/);
+  await screenshot(page, 'screenshot-arrived.png');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('an obstacle painted on the path while Active is planned around', { timeout: 120_000 }, async () => {
+  const { page, problems } = await open();
+  await activateAll(page);
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.5, null, WAIT);
+  // A stroke of the 5×5 brush across the path, 40 % of the way along.
+  const { local_path: path } = await plan(page);
+  const at = path[Math.floor(path.length * 0.4)];
+  const before = path.length;
+  await page.click('#tool-paint');
+  await page.selectOption('#brush', '5');
+  const [x0, y0] = await cellToPage(page, [at[0] - 3, at[1] + 3]);
+  const [x1, y1] = await cellToPage(page, [at[0] + 3, at[1] - 3]);
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  await page.mouse.move(x1, y1, { steps: 8 });
+  await page.mouse.up();
+  // The MapUpdate reaches the planners; LocalPathPlanning replans around the block.
+  await page.waitForFunction(() => {
+    // Newest first: a replanned LocalPlanSent above (after) the MapUpdated entry.
+    const items = [...document.querySelectorAll('#events li')];
+    const update = items.findIndex((li) => li.dataset.kind === 'MapUpdated');
+    return update > 0 && items.slice(0, update)
+      .some((li) => li.dataset.kind === 'LocalPlanSent' && li.textContent.includes('(replanned)'));
+  }, null, WAIT);
+  // One MapUpdate per frame of the stroke.
+  const updated = await logged(page, 'MapUpdated');
+  assert.ok(updated.length >= 1);
+  for (const u of updated) assert.match(u, /^map updated: \d+ cells listed, \d+ changed$/);
+  assert.equal(await page.evaluate(([x, y]) => window.rtnav.demo.cell(x, y), at), 1, 'the path cell is now an obstacle');
+  const after = await plan(page);
+  const blocked = await page.evaluate((cells) => cells.filter(([x, y]) => window.rtnav.demo.cell(x, y) !== 0).length, after.local_path);
+  assert.equal(blocked, 0, 'the new local path avoids every obstacle cell');
+  assert.notEqual(after.local_path.length, before);
+  await page.selectOption('#speed', '4');
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 9, null, { timeout: 30_000 });
+  await page.click('#pause');
+  await screenshot(page, 'screenshot-replan.png');
+  assert.equal((await telemetry(page)).bumps, 0);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a goal dropped inside an obstacle is refused; the previous goal and path stay', { timeout: 60_000 }, async () => {
+  const { page, problems } = await open();
+  const before = await plan(page);
+  // An obstacle cell whose neighbours are obstacles too (inside the shed).
+  const cell = await page.evaluate(() => {
+    const { demo } = window.rtnav;
+    const m = JSON.parse(demo.map_json());
+    for (let y = 2; y < m.height - 2; y++) {
+      for (let x = 2; x < m.width - 2; x++) {
+        let solid = true;
+        for (let dy = -2; dy <= 2 && solid; dy++) for (let dx = -2; dx <= 2 && solid; dx++) solid = demo.cell(x + dx, y + dy) === 1;
+        if (solid) return [x, y];
+      }
+    }
+    return null;
+  });
+  assert.ok(cell, 'the map has a solid obstacle');
+  await page.click('#tool-goal');
+  const [x, y] = await cellToPage(page, cell);
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + 40, y - 40, { steps: 4 });
+  await page.mouse.up();
+  await page.waitForSelector('#notice[data-level="error"]:not([hidden])', WAIT);
+  const notice = await page.textContent('#notice-text');
+  assert.match(notice, /^Goal refused: .+\. The previous goal and its path are kept\.$/);
+  assert.match(notice, /obstacle|dmin|inside/i, notice);
+  assert.deepEqual(await plan(page), before);
+  assert.deepEqual((await logged(page, 'Page')).filter((t) => t.startsWith('Goal refused')).length, 1);
+  // A good goal (a cell on the path), dragged upward, backward: accepted and planned at once
+  // (the planners are Active).
+  await page.click('#dir-backward');
+  await page.waitForSelector('#notice[data-level="success"]:not([hidden])', WAIT);
+  assert.equal((await plan(page)).direction, 'backward');
+  const target = before.local_path[Math.floor(before.local_path.length / 2)];
+  const [gx, gy] = await cellToPage(page, target);
+  await page.mouse.move(gx, gy);
+  await page.mouse.down();
+  await page.mouse.move(gx, gy - 50, { steps: 4 });
+  await page.mouse.up();
+  await page.waitForFunction(() => document.getElementById('notice-text').textContent.startsWith('Goal set at'), null, WAIT);
+  const moved = await plan(page);
+  const m = await mapInfo(page);
+  const centre = target.map((c, i) => m.origin[i] + (c + 0.5) * m.grid_size);
+  assert.equal(moved.goal.theta_deg, 90);
+  assert.ok(Math.hypot(moved.goal.x - centre[0], moved.goal.y - centre[1]) < m.grid_size, JSON.stringify([moved.goal, centre]));
+  assert.equal(moved.direction, 'backward');
+  assert.notDeepEqual(moved.local_path, before.local_path);
+  const goals = await logged(page, 'GoalSet');
+  assert.match(goals.at(-1), /→ \(\d+\.\d\d, \d+\.\d\d, 90\.0°\), Backward$/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('Inject fault → Error with the reason → Reset → Inactive → Activate', { timeout: 60_000 }, async () => {
+  const { page, problems } = await open();
+  await activateAll(page);
+  const row = '#components li[data-component="MotorControl"]';
+  await page.click(`${row} .fault`);
+  await expectState(page, 'MotorControl', 'Error');
+  assert.equal(await page.textContent(`${row} .rtc-reason`), 'Reason: injected fault: requested from the page');
+  await page.waitForSelector('#system-state[data-state="Error"]', WAIT);
+  assert.equal(await page.$eval('#system-state', (e) => getComputedStyle(e).backgroundColor), COLOURS.Error);
+  assert.deepEqual(await logged(page, 'ComponentError'), ['MotorControl0: on_execute failed: injected fault: requested from the page']);
+  assert.equal(await page.textContent(`${row} .act`), 'Reset');
+  assert.equal(await page.isDisabled(`${row} .fault`), true);
+  await page.click(`${row} .act`);
+  await expectState(page, 'MotorControl', 'Inactive');
+  assert.equal(await page.isVisible(`${row} .rtc-reason`), false);
+  await page.click(`${row} .act`);
+  await expectState(page, 'MotorControl', 'Active');
+  await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
+  // The robot drives on.
+  const driven = (await telemetry(page)).path_length;
+  await page.waitForFunction((d) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > d + 0.3, driven, WAIT);
+  const changes = await logged(page, 'StateChanged');
+  assert.deepEqual(changes.filter((t) => t.startsWith('MotorControl0')), [
+    'MotorControl0: Created → Inactive',
+    'MotorControl0: Inactive → Active',
+    'MotorControl0: Active → Error',
+    'MotorControl0: Error → Inactive',
+    'MotorControl0: Inactive → Active',
+  ]);
+  // Deactivate all: every component Inactive (blue).
+  await page.click('#deactivate-all');
+  for (const name of ['MapBuilder', 'PhysicsSim', 'DriveControl']) await expectState(page, name, 'Inactive');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', { timeout: 60_000 }, async () => {
+  const { page, problems } = await open();
+  await activateAll(page);
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.3, null, WAIT);
+  // Paint right where the robot is.
+  const t = await telemetry(page);
+  const m = await mapInfo(page);
+  const cell = [Math.floor((t.pose.x - m.origin[0]) / m.grid_size), Math.floor((t.pose.y - m.origin[1]) / m.grid_size)];
+  await page.click('#tool-paint');
+  await page.selectOption('#brush', '5');
+  const [x, y] = await cellToPage(page, cell);
+  await page.mouse.click(x, y);
+  await expectState(page, 'PhysicsSim', 'Error');
+  const reason = await page.textContent('#components li[data-component="PhysicsSim"] .rtc-reason');
+  assert.match(reason, /^Reason: bump: /);
+  assert.equal((await logged(page, 'Bump')).length, 1);
+  assert.equal(await page.textContent('#telemetry dd[data-key="status"]'), 'Error: bumped');
+  const goal = (await plan(page)).goal;
+  const pose = (await telemetry(page)).pose;
+  await page.click('#reset-all');
+  await page.waitForSelector('#system-state[data-state="Inactive"]', WAIT);
+  await expectState(page, 'PhysicsSim', 'Inactive');
+  assert.equal(await page.isVisible('#components li[data-component="PhysicsSim"] .rtc-reason'), false);
+  // Nothing held is lost: the goal, the robot's pose, the painted cells.
+  assert.deepEqual((await plan(page)).goal, goal);
+  assert.deepEqual((await telemetry(page)).pose, pose);
+  assert.equal(await page.evaluate(([x, y]) => window.rtnav.demo.cell(x, y), cell), 1);
+  // Erase the obstacle, activate: the goal is sent again and the robot drives on.
+  await page.click('#tool-erase');
+  await page.mouse.click(x, y);
+  await page.waitForFunction(([cx, cy]) => window.rtnav.demo.cell(cx, cy) === 0, cell, WAIT);
+  const driven = (await telemetry(page)).path_length;
+  await activateAll(page);
+  await page.waitForFunction((d) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > d + 0.3, driven, WAIT);
+  assert.deepEqual(await logged(page, 'GoalResent'), ['DriveControl had no path after its activation: the goal was sent again']);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a bad map file is refused with the reason; the current map stays', { timeout: 60_000 }, async () => {
+  const { page, problems } = await open();
+  const before = await mapInfo(page);
+  await page.setInputFiles('#map-file', { name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"width": 3') });
+  await page.waitForSelector('#notice[data-level="error"]:not([hidden])', WAIT);
+  assert.match(
+    await page.textContent('#notice-text'),
+    /^Could not load the map: `broken\.json`: rtnav JSON.*\. The current map stays\.$/,
+  );
+  assert.deepEqual(await mapInfo(page), before);
+  assert.equal(await page.inputValue('#scenario'), 'open_field');
+  // An image without its YAML: the reason says what is missing.
+  await page.setInputFiles('#map-file', { name: 'map.pgm', mimeType: 'image/x-portable-graymap', buffer: Buffer.from('P5 1 1 255\n\0') });
+  await page.waitForFunction(() => document.getElementById('notice-text').textContent.includes('needs its .yaml'), null, WAIT);
+  assert.deepEqual(await mapInfo(page), before);
+  // A ROS map (YAML and image picked together) and a MovingAI map load.
+  await page.setInputFiles('#map-file', [join(REPO, 'fixtures/maps/tiny.yaml'), join(REPO, 'fixtures/maps/tiny.pgm')]);
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'tiny.yaml', null, WAIT);
+  assert.equal((await mapInfo(page)).grid_size, 0.25);
+  await page.setInputFiles('#map-file', join(REPO, '..', 'shared', 'data', 'movingai', 'dao', 'arena.map'));
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'arena.map', null, WAIT);
+  assert.deepEqual(await mapInfo(page).then((m) => [m.width, m.height, m.grid_size]), [49, 49, 1]);
+  // A good map file loads, with the planners Active and no goal yet.
+  const rows = ['########', '#......#', '#......#', '#......#', '########'];
+  await page.setInputFiles('#map-file', {
+    name: 'room.json', mimeType: 'application/json',
+    buffer: Buffer.from(JSON.stringify({ width: 8, height: 5, grid_size: 0.5, rows })),
+  });
+  await page.waitForSelector('#notice[data-level="success"]:not([hidden])', WAIT);
+  const room = await mapInfo(page);
+  assert.deepEqual([room.name, room.width, room.height, room.grid_size], ['room.json', 8, 5, 0.5]);
+  assert.equal(await page.textContent('#about-title'), 'Map file: room.json');
+  assert.equal((await plan(page)).goal, null);
+  // And a scenario from the picker replaces it.
+  await page.selectOption('#scenario', 'backward_dock');
+  await page.waitForFunction(() => document.getElementById('about-title').textContent.includes('backward dock'), null, WAIT);
+  assert.equal((await mapInfo(page)).name, 'fixtures/maps/scenarios/backward_dock.json');
+  assert.ok((await plan(page)).goal);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('frame budget: step + render + blit at 1280×800', { timeout: 90_000 }, async () => {
+  const { page, problems } = await open();
+  await page.evaluate(() => window.rtnav.setFrameSize(1280, 800));
+  assert.deepEqual(await page.evaluate(() => [document.getElementById('view').width, document.getElementById('view').height]), [1280, 800]);
+  await activateAll(page);
+  await page.waitForTimeout(500);
+  /** Median and 90th percentile of the page's own frame times over `ms` of driving. */
+  const measure = async (speed, ms) => {
+    await page.selectOption('#speed', speed);
+    await page.evaluate(() => window.rtnav.clearFrameTimes());
+    await page.waitForTimeout(ms);
+    const times = (await page.evaluate(() => window.rtnav.frameTimes())).sort((a, b) => a - b);
+    assert.ok(times.length > 30, `${times.length} frames in ${ms} ms`);
+    const at = (q) => times[Math.min(times.length - 1, Math.floor(times.length * q))];
+    const line = `frame time at 1280×800, ${speed}× speed: median ${at(0.5).toFixed(2)} ms, ` +
+      `90th percentile ${at(0.9).toFixed(2)} ms over ${times.length} frames`;
+    console.log(line);
+    return at(0.5);
+  };
+  // The machine is shared (other builds may run): the better of two windows counts.
+  const median = Math.min(await measure('1', 2500), await measure('1', 2500));
+  await measure('16', 2500);
+  assert.equal((await telemetry(page)).state, 'Active');
+  assert.ok(median <= BUDGET_MS, `median ${median} ms over the ${BUDGET_MS} ms budget`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a Rust panic is shown, not a frozen tab', { timeout: 60_000 }, async () => {
+  const { page, problems } = await open();
+  assert.equal(await page.isVisible('#crash'), false);
+  await page.evaluate(() => window.rtnav.debugPanic());
+  await page.waitForSelector('#crash', { state: 'visible', ...WAIT });
+  assert.equal(await page.getAttribute('body', 'data-crashed'), 'true');
+  const message = await page.textContent('#crash-message');
+  assert.match(message, /debug_panic: deliberate panic requested by the page/);
+  assert.match(message, /wasm\/src\/demo\.rs/);
+  assert.ok(problems.length >= 1, 'the panic is logged');
+  for (const p of problems) assert.match(p, /debug_panic/);
+  await page.close();
+});

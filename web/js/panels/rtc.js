@@ -1,0 +1,107 @@
+// The RTC panel: every component of the system (SPEC §0) with its lifecycle state in the RT
+// System Editor's colours, the reason when it is in Error, and the requests of SPEC §1 —
+// for all components at once and for each one — plus "Inject fault".
+import { el, setText, textOn } from '../dom.js';
+
+const ACTIONS = {
+  Inactive: ['activate', 'Activate'],
+  Active: ['deactivate', 'Deactivate'],
+  Error: ['reset', 'Reset'],
+};
+const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
+
+function paint(badge, state, colour) {
+  if (badge.dataset.state === state) return;
+  badge.dataset.state = state;
+  badge.style.background = colour;
+  badge.style.color = textOn(colour);
+}
+
+export function createRtcPanel(root, app) {
+  const { demo } = app;
+
+  const request = (what, fn) => {
+    const r = app.attempt(fn);
+    if (!r.ok) {
+      app.notice.show(`${what} refused: ${r.error}`, 'error');
+      app.log.page(`${what} refused: ${r.error}`, 'warn');
+    }
+    return r;
+  };
+
+  const systemBadge = el('span', { id: 'system-state', class: 'state-badge' });
+  const all = {
+    activate: el('button', { type: 'button', id: 'activate-all', onclick: () => request('Activate all', () => demo.activate_all()) }, 'Activate all'),
+    deactivate: el('button', { type: 'button', id: 'deactivate-all', class: 'secondary', onclick: () => request('Deactivate all', () => demo.deactivate_all()) }, 'Deactivate all'),
+    reset: el('button', { type: 'button', id: 'reset-all', class: 'secondary', onclick: () => request('Reset all', () => demo.reset_all()) }, 'Reset all'),
+  };
+  const list = el('ol', { class: 'rtc-list', id: 'components' });
+  const rows = new Map();
+
+  function row(c) {
+    const badge = el('span', { class: 'state-badge small' });
+    const name = el('span', { class: 'rtc-name' });
+    const rate = el('span', { class: 'rate' });
+    const status = el('div', { class: 'rtc-status' });
+    const reason = el('div', { class: 'rtc-reason', hidden: true });
+    const action = el('button', { type: 'button', class: 'act' });
+    const fault = el('button', { type: 'button', class: 'fault danger', title: `Make ${c.instance_name}'s next execution fail` }, 'Inject fault');
+    action.addEventListener('click', () => {
+      const what = action.dataset.action;
+      request(`${action.textContent} ${c.name}`, () => demo[what](c.name));
+    });
+    fault.addEventListener('click', () => request(`Inject fault into ${c.name}`, () => demo.inject_fault(c.name)));
+    const li = el('li', { class: 'rtc', dataset: { component: c.name } },
+      badge,
+      el('div', { class: 'rtc-main' }, el('div', { class: 'rtc-title' }, name, rate), status, reason),
+      el('div', { class: 'rtc-actions' }, action, fault));
+    list.append(li);
+    const r = { li, badge, name, rate, status, reason, action, fault };
+    rows.set(c.name, r);
+    return r;
+  }
+
+  root.append(
+    el('div', { class: 'panel-head' },
+      el('h2', {}, 'RT-components'),
+      el('span', { class: 'legend' },
+        ...Object.entries(EDITOR).flatMap(([s, c]) => [el('span', { class: 'swatch', style: `--c:${c}` }), s]))),
+    el('div', { class: 'system-row' }, el('span', { class: 'label' }, 'System'), systemBadge,
+      el('div', { class: 'all-buttons' }, all.activate, all.deactivate, all.reset)),
+    list,
+  );
+
+  return {
+    update() {
+      const components = JSON.parse(demo.components_json());
+      let active = 0;
+      let error = 0;
+      for (const c of components) {
+        const r = rows.get(c.name) ?? row(c);
+        r.li.dataset.state = c.state;
+        paint(r.badge, c.state, c.colour);
+        setText(r.badge, c.state);
+        setText(r.name, c.instance_name);
+        setText(r.rate, `${c.rate} Hz`);
+        setText(r.status, c.status);
+        const why = c.state === 'Error' && c.last_error ? `Reason: ${c.last_error}` : '';
+        setText(r.reason, why);
+        r.reason.hidden = !why;
+        const [action, label] = ACTIONS[c.state] ?? ['activate', 'Activate'];
+        r.action.dataset.action = action;
+        setText(r.action, label);
+        r.action.disabled = !(c.state in ACTIONS);
+        r.fault.disabled = !(c.state === 'Inactive' || c.state === 'Active') || c.fault_pending;
+        setText(r.fault, c.fault_pending ? 'Fault pending…' : 'Inject fault');
+        if (c.state === 'Active') active++;
+        if (c.state === 'Error') error++;
+      }
+      const s = demo.system_state();
+      paint(systemBadge, s, EDITOR[s] ?? '#dee2e6');
+      setText(systemBadge, s === 'Partial' ? `Partial · ${active} of ${components.length} Active` : s);
+      all.activate.disabled = !components.some((c) => c.state === 'Inactive');
+      all.deactivate.disabled = active === 0;
+      all.reset.disabled = error === 0 && active === 0;
+    },
+  };
+}

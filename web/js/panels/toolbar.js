@@ -1,0 +1,150 @@
+// The toolbar above the canvas: what the mouse does (goal, start, obstacle, erase), the
+// driving direction, Clear and SafeMode (000 §5.2.4.7) and the layers the renderer draws;
+// beside the clock in the top bar: pause, one tick, speed.
+import { el } from '../dom.js';
+
+const TOOLS = [
+  ['goal', 'Goal', 'g', 'Drag to set the goal and its heading'],
+  ['start', 'Start', 's', 'Drag to place the robot and its heading'],
+  ['paint', 'Obstacle', 'o', 'Paint obstacle cells (MapUpdate)'],
+  ['erase', 'Erase', 'e', 'Erase obstacle cells (MapUpdate)'],
+];
+const SPEEDS = [0.25, 0.5, 1, 2, 4, 8, 16];
+const BRUSHES = [1, 3, 5];
+const LAYER_NAMES = {
+  occupancy: 'Obstacles',
+  dmin_zone: 'dmin zone',
+  heat_map: 'Potential field',
+  global_path: 'Global path',
+  local_path: 'Local path',
+  control_points: 'Control points',
+  local_target: 'Local target',
+  robot: 'Robot',
+  trail: 'Trail',
+  start_goal: 'Start and goal',
+  scale_bar: 'Scale bar',
+  legend: 'Legend',
+  caption: 'Caption',
+};
+
+export function createToolbar(root, clockRoot, app) {
+  const { demo } = app;
+
+  // ---- tools
+  const toolButtons = new Map();
+  for (const [tool, label, key, title] of TOOLS) {
+    const b = el('button', {
+      type: 'button', id: `tool-${tool}`, class: 'seg', title: `${title} (${key.toUpperCase()})`,
+      onclick: () => app.emit('tool', tool),
+    }, label);
+    toolButtons.set(tool, b);
+  }
+  const brush = el('select', { id: 'brush', title: 'Brush size in cells' },
+    ...BRUSHES.map((n) => el('option', { value: n }, `${n}×${n}`)));
+  brush.addEventListener('change', () => { app.ui.brush = Number(brush.value); });
+  const brushBox = el('label', { class: 'brush', title: 'Brush size in cells' }, brush);
+  const showTool = (tool) => {
+    for (const [t, b] of toolButtons) b.setAttribute('aria-pressed', String(t === tool));
+    brushBox.hidden = !(tool === 'paint' || tool === 'erase');
+  };
+  app.on('tool', showTool);
+  showTool(app.ui.tool);
+
+  // ---- direction
+  const dirButtons = {
+    forward: el('button', { type: 'button', id: 'dir-forward', class: 'seg', title: 'SetPosition Direction 1: drive forward' }, 'Forward'),
+    backward: el('button', { type: 'button', id: 'dir-backward', class: 'seg', title: 'SetPosition Direction 2: drive backward' }, 'Backward'),
+  };
+  const showDirection = () => {
+    dirButtons.forward.setAttribute('aria-pressed', String(!app.ui.backward));
+    dirButtons.backward.setAttribute('aria-pressed', String(app.ui.backward));
+  };
+  for (const [name, b] of Object.entries(dirButtons)) {
+    b.addEventListener('click', () => {
+      const backward = name === 'backward';
+      if (app.ui.backward === backward) return;
+      app.ui.backward = backward;
+      showDirection();
+      app.stage.resubmitDirection();
+    });
+  }
+  app.on('loaded', () => {
+    app.ui.backward = JSON.parse(demo.plan_json()).direction === 'backward';
+    showDirection();
+  });
+  showDirection();
+
+  // ---- Clear, SafeMode
+  const clear = el('button', {
+    type: 'button', id: 'clear', class: 'plain', title: 'Clear (000 §5.2.4.7): drop the goal and the paths; the robot stops',
+    onclick: () => { app.attempt(() => demo.clear()); app.notice.show('Clear: the goal and the paths are dropped.', 'info'); },
+  }, 'Clear');
+  const safe = el('button', {
+    type: 'button', id: 'safe-mode', class: 'plain', title: 'SafeMode: the robot halts until the next goal',
+    onclick: () => { app.attempt(() => demo.safe_mode()); app.notice.show('SafeMode: the robot halts until the next goal.', 'info'); },
+  }, 'Safe mode');
+
+  // ---- the clock
+  const pause = el('button', { type: 'button', id: 'pause', class: 'plain', title: 'Pause or run the simulated clock (Space)' }, 'Pause');
+  const togglePause = () => {
+    demo.set_paused(!demo.paused());
+  };
+  pause.addEventListener('click', togglePause);
+  const step = el('button', {
+    type: 'button', id: 'step', class: 'plain', title: 'One tick (1 ms of simulated time) while paused (.)',
+    onclick: () => app.attempt(() => demo.step_ticks(1)),
+  }, 'Step');
+  const speed = el('select', { id: 'speed', title: 'Simulated seconds per second' },
+    ...SPEEDS.map((s) => el('option', { value: s, selected: s === 1 }, `${s}×`)));
+  speed.addEventListener('change', () => {
+    const r = app.attempt(() => demo.set_speed(Number(speed.value)));
+    if (!r.ok) app.notice.show(r.error, 'error');
+  });
+
+  // ---- layers
+  const layers = JSON.parse(demo.layers_json());
+  const layerBoxes = Object.keys(LAYER_NAMES).filter((k) => k in layers).map((name) => {
+    const box = el('input', { type: 'checkbox', id: `layer-${name}`, checked: layers[name] });
+    box.addEventListener('change', () => {
+      const r = app.attempt(() => demo.set_layer(name, box.checked));
+      if (!r.ok) app.notice.show(r.error, 'error');
+    });
+    return el('label', { class: 'layer' }, box, LAYER_NAMES[name]);
+  });
+  const layerMenu = el('details', { class: 'menu', id: 'layers' },
+    el('summary', { class: 'plain' }, 'Layers'),
+    el('div', { class: 'menu-body' }, ...layerBoxes));
+
+  root.append(
+    el('div', { class: 'group', role: 'group', 'aria-label': 'Mouse tool' }, ...toolButtons.values()),
+    brushBox,
+    el('div', { class: 'group', role: 'group', 'aria-label': 'Direction' }, dirButtons.forward, dirButtons.backward),
+    el('div', { class: 'group plain-group' }, clear, safe),
+    el('span', { class: 'spacer' }),
+    layerMenu,
+  );
+  clockRoot.append(pause, step, speed);
+
+  // Keyboard: tools by letter, Space pauses, "." steps (not while typing in a field).
+  window.addEventListener('keydown', (e) => {
+    const t = e.target;
+    if (t instanceof HTMLInputElement || t instanceof HTMLSelectElement || e.ctrlKey || e.metaKey || e.altKey) return;
+    if (t instanceof HTMLButtonElement && (e.key === ' ' || e.key === 'Enter')) return;
+    const tool = TOOLS.find((t) => t[2] === e.key.toLowerCase());
+    if (tool) app.emit('tool', tool[0]);
+    else if (e.key === ' ') { togglePause(); e.preventDefault(); }
+    else if (e.key === '.') app.attempt(() => demo.step_ticks(1));
+  });
+
+  return {
+    update() {
+      const paused = demo.paused();
+      if (pause.dataset.paused !== String(paused)) {
+        pause.dataset.paused = String(paused);
+        pause.textContent = paused ? 'Run' : 'Pause';
+        pause.classList.toggle('active', paused);
+        step.disabled = !paused;
+      }
+    },
+  };
+}
