@@ -14,7 +14,7 @@
 //!    for rows whose distances are small, a bounded sideways scan ([`row_scan`]) that is
 //!    cheaper there. Both are exact, so the choice only changes the time.
 //!
-//! Metres are `√d² · GridSize` (`libm::sqrt`), through a table for small `d²`.
+//! Metres are `√d² · GridSize` (`f64::sqrt`, correctly rounded on every target), through a table for small `d²`.
 //!
 //! Everything outside the map is obstacle (SPEC §2), so the transform sees a virtual ring of
 //! obstacle cells around the map: in the column phase the rows `y = −1` and `y = height`, in
@@ -184,7 +184,7 @@ const METRE_TABLE_LEN: usize = 4096;
 
 /// `√d² · grid_size`: the one formula for metres (SPEC §6: `sqrt` through `libm`).
 fn to_metres(d2: u64, grid_size: f64) -> f64 {
-    libm::sqrt(d2 as f64) * grid_size
+    f64::sqrt(d2 as f64) * grid_size
 }
 
 /// Metres of a row phase, with the lookup table for small `d²`.

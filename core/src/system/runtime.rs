@@ -1127,7 +1127,7 @@ impl System {
         if let Some(last) = self.last_pose {
             let (dx, dy) = (pose.x - last.x, pose.y - last.y);
             if dx != 0.0 || dy != 0.0 {
-                self.stats.path_length += libm::sqrt(dx * dx + dy * dy);
+                self.stats.path_length += f64::sqrt(dx * dx + dy * dy);
             }
         }
         self.last_pose = Some(pose);
