@@ -37,6 +37,8 @@ pub(crate) struct DistanceField {
     column: Vec<u32>,
     /// Obstacle distance in metres, x fastest.
     distance: Vec<f64>,
+    /// `d²` → metres for this map's grid size (kept: a `MapUpdate` reuses it).
+    metres: Metres,
 }
 
 /// One parabola of the lower envelope: it is the lowest from position `start` on; its apex
@@ -187,18 +189,21 @@ fn to_metres(d2: u64, grid_size: f64) -> f64 {
     libm::sqrt(d2 as f64) * grid_size
 }
 
-/// Metres of a row phase, with the lookup table for small `d²`.
+/// `√d² · grid_size`, with a lookup table for the small `d²` a map can have.
+#[derive(Debug, Clone, PartialEq)]
 struct Metres {
     table: Vec<f64>,
     grid_size: f64,
 }
 
 impl Metres {
-    fn new(grid_size: f64) -> Self {
+    /// The table for a `width × height` map: no distance exceeds half its smaller side plus
+    /// one (the virtual ring), so small maps get small tables.
+    fn new(width: usize, height: usize, grid_size: f64) -> Self {
+        let r = (width.min(height) as u64 + 2) / 2;
+        let len = (r * r * 2 + 1).min(METRE_TABLE_LEN as u64);
         Self {
-            table: (0..METRE_TABLE_LEN as u64)
-                .map(|d2| to_metres(d2, grid_size))
-                .collect(),
+            table: (0..len).map(|d2| to_metres(d2, grid_size)).collect(),
             grid_size,
         }
     }
@@ -268,22 +273,22 @@ impl DistanceField {
         let mut field = Self {
             column: vec![0; cells.len()],
             distance: vec![0.0; cells.len()],
+            metres: Metres::new(width, height, grid_size),
         };
-        field.recompute(cells, width, height, grid_size);
+        field.recompute(cells, width, height);
         field
     }
 
     /// The whole transform again, in place (no allocation beyond the row scratch).
-    fn recompute(&mut self, cells: &[u8], width: usize, height: usize, grid_size: f64) {
+    fn recompute(&mut self, cells: &[u8], width: usize, height: usize) {
         column_phase(cells, width, height, &mut self.column);
         let mut scratch = RowScratch::new(width);
-        let metres = Metres::new(grid_size);
         for (g, out) in self
             .column
             .chunks_exact(width)
             .zip(self.distance.chunks_exact_mut(width))
         {
-            transform_row(&mut scratch, &metres, g, out);
+            transform_row(&mut scratch, &self.metres, g, out);
         }
     }
 
@@ -300,7 +305,6 @@ impl DistanceField {
         cells: &[u8],
         width: usize,
         height: usize,
-        grid_size: f64,
         changed: &[usize],
     ) {
         let mut columns: Vec<usize> = changed.iter().map(|&i| i % width).collect();
@@ -308,7 +312,7 @@ impl DistanceField {
         columns.dedup();
         // Many columns: the row-major full recompute is cheaper than strided columns.
         if columns.len() * 8 > width {
-            self.recompute(cells, width, height, grid_size);
+            self.recompute(cells, width, height);
             return;
         }
         let mut dirty = vec![false; height];
@@ -324,11 +328,10 @@ impl DistanceField {
             }
         }
         let mut scratch = RowScratch::new(width);
-        let metres = Metres::new(grid_size);
         for y in (0..height).filter(|&y| dirty[y]) {
             let r = y * width..(y + 1) * width;
             let out = &mut self.distance[r.clone()];
-            transform_row(&mut scratch, &metres, &self.column[r], out);
+            transform_row(&mut scratch, &self.metres, &self.column[r], out);
         }
     }
 }
