@@ -672,7 +672,8 @@ impl System {
     }
 
     /// A component's configuration parameters, to read and edit live (SPEC §1
-    /// "Configuration parameters"). MapBuilder, MapMaintenance and the physics have none.
+    /// "Configuration parameters"). MapBuilder and MapMaintenance have none; PhysicsSim's
+    /// are the model's dynamics (SPEC §5 "Physics"), used from its next tick on.
     pub fn config_mut(&mut self, kind: ComponentKind) -> crate::Result<&mut dyn ConfigAccess> {
         let c = self.ec.component_dyn_mut(Self::id(kind))?;
         c.configuration().ok_or_else(|| {
