@@ -148,6 +148,13 @@ fn e2e() -> Result {
         .current_dir(e2e_dir())
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))?;
     wasm::build(wasm::Profile::Release)?;
+    // The native runner, for tests that compare the page's numbers with the core's.
+    run(cargo().args(["build", "-q", "-p", "rtnav-cli"]))?;
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(|| tools::repo_root().join("target"), PathBuf::from);
+    let cli = target
+        .join("debug")
+        .join(format!("rtnav{}", std::env::consts::EXE_SUFFIX));
     let server = Background::start()?;
     println!("xtask: serving web/ at {}", server.url);
     let mut tests: Vec<PathBuf> = std::fs::read_dir(e2e_dir())?
@@ -163,6 +170,7 @@ fn e2e() -> Result {
         .args(&tests)
         .current_dir(e2e_dir())
         .env("RTNAV_URL", &server.url)
+        .env("RTNAV_CLI", &cli)
         .env("RTNAV_CHROMIUM", tools::CHROMIUM)
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"));
     drop(server);
