@@ -134,6 +134,20 @@ fn wasm_tests() -> Result {
         ))
 }
 
+/// Cargo's target directory: `$CARGO_TARGET_DIR`, else `target/` in the repository.
+fn target_dir() -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .map(|d| {
+            if d.is_absolute() {
+                d
+            } else {
+                tools::repo_root().join(d)
+            }
+        })
+        .unwrap_or_else(|| tools::repo_root().join("target"))
+}
+
 fn e2e_dir() -> PathBuf {
     tools::repo_root().join("tests").join("e2e")
 }
@@ -148,6 +162,12 @@ fn e2e() -> Result {
         .current_dir(e2e_dir())
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))?;
     wasm::build(wasm::Profile::Release)?;
+    // The native `rtnav` binary, for the tests that compare the page with the native core
+    // (`RTNAV_CLI`).
+    run(cargo().args(["build", "-p", "rtnav-cli"]))?;
+    let cli = target_dir()
+        .join("debug")
+        .join(format!("rtnav{}", std::env::consts::EXE_SUFFIX));
     let server = Background::start()?;
     println!("xtask: serving web/ at {}", server.url);
     let mut tests: Vec<PathBuf> = std::fs::read_dir(e2e_dir())?
@@ -163,6 +183,7 @@ fn e2e() -> Result {
         .args(&tests)
         .current_dir(e2e_dir())
         .env("RTNAV_URL", &server.url)
+        .env("RTNAV_CLI", &cli)
         .env("RTNAV_CHROMIUM", tools::CHROMIUM)
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"));
     drop(server);
