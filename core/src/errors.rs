@@ -652,6 +652,32 @@ pub enum GlobalPlanningError {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum SystemError {
+    /// A share link's token that cannot be used.
+    #[error("share link: {reason}")]
+    BadShareToken {
+        /// Why.
+        reason: String,
+    },
+    /// A clock speed outside the range offered.
+    #[error("speed {speed}× is outside {min}× to {max}×")]
+    BadSpeed {
+        /// The speed asked for.
+        speed: f64,
+        /// The slowest.
+        min: f64,
+        /// The fastest.
+        max: f64,
+    },
+    /// An input port the system cannot write into ([`System::inject_input`](crate::system::System::inject_input)).
+    #[error("{component} has no input port `{port}` to inject into (ports: {known})")]
+    UnknownPort {
+        /// The component named.
+        component: String,
+        /// The port named.
+        port: String,
+        /// The ports that can be injected into.
+        known: &'static str,
+    },
     /// A request that needs a map before one is loaded.
     #[error("{call}: no map is loaded")]
     NoMap {

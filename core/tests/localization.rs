@@ -119,11 +119,18 @@ fn simulated_mode_publishes_the_simulated_pose_and_the_start_pose_before_it() {
             ..
         })
     ));
+    // A non-finite pose is a fault: on_execute fails naming the port and field, and the
+    // held pose stays.
     b.sim.write(TimedDoubleSeq {
         tm: Time::from_nanos(4 * MS),
         data: vec![1.0, f64::NAN, 0.0, 0.0],
     });
-    assert_eq!(b.exec(4), Pose::new(3.0, -1.0, 2.5));
+    let err = b.l.on_execute(&tick(4)).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "InSimulatedPosition: data[1] = NaN is not finite"
+    );
+    assert_eq!(b.l.current_pose(), Pose::new(3.0, -1.0, 2.5));
     assert!(matches!(
         b.l.last_error(),
         Some(MotionError::NonFinite { .. })
@@ -188,7 +195,7 @@ fn odometry_of_constant_wheel_rates_is_an_exact_circle() {
 }
 
 #[test]
-fn bad_wheel_angles_are_ignored_and_reported() {
+fn bad_wheel_angles_are_reported_and_non_finite_ones_fail() {
     let mut b = Bench::new(LocalizationMode::Odometry, Pose::default());
     b.wheels(0, &[0.0, 0.0]);
     b.exec(0);
@@ -203,7 +210,11 @@ fn bad_wheel_angles_are_ignored_and_reported() {
         })
     ));
     b.wheels(2, &[f64::NAN, 1.0]);
-    assert_eq!(b.exec(2), Pose::default());
+    assert!(
+        b.l.on_execute(&tick(2)).is_err(),
+        "a non-finite angle is a fault"
+    );
+    assert_eq!(b.l.current_pose(), Pose::default());
     assert!(matches!(
         b.l.last_error(),
         Some(MotionError::NonFinite { .. })

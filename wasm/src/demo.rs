@@ -1,25 +1,18 @@
-//! [`Demo`]: the whole system and its renderer behind one handle (SPEC §5 InventGUI).
+//! [`Demo`]: a [`Session`] (the system as a person drives it) and the renderer behind one
+//! handle (SPEC §5 InventGUI).
 //!
 //! Every method is one request to the core: the lifecycle requests of SPEC §1 (per
-//! component and for all), `SetPosition`, `Clear`, `SafeMode`, `MapUpdate`, map and scenario
-//! loading, stepping, drawing. What the page reads comes back as JSON (`views`).
-//!
-//! The page's model of a run: after a scenario or a map is loaded, the planning components
-//! (MapBuilder, MapMaintenance, GlobalPathPlanning, LocalPathPlanning) are Active and the
-//! plan is drawn ([`System::preview`]); the robot's components (PhysicsSim, MotorControl,
-//! Localization, DriveControl) wait, Inactive, for **Activate**. The execution context runs
-//! all the time (as in OpenRTM: Inactive components simply are not executed), so a goal set
-//! while standing is planned at once. A scenario's timed events count from the moment the
-//! robot starts (the physics is activated), not from the page load: the obstacle of
-//! `appearing_obstacle` appears while the robot drives, however long the page was open.
+//! component and for all), `SetPosition`, `Clear`, `SafeMode`, `MapUpdate`, parameters,
+//! map and scenario loading, stepping, drawing. What the page reads comes back as JSON
+//! (`views`). The page's model of a run — the planning preview, the robot waiting for
+//! **Activate**, timed events counted from the start of the drive, share links — is the
+//! core's [`Session`]; this layer only converts.
 
-use rtnav::components::{DriveStatus, MapUpdate};
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
-use rtnav::motion::DrivePhase;
 use rtnav::render::{Layers, Renderer};
-use rtnav::rtc::{LifecycleState, Time};
-use rtnav::system::{ComponentKind, MapSource, Rates, Scenario, ScenarioEvent, System};
+use rtnav::rtc::LifecycleState;
+use rtnav::system::{ComponentKind, Scenario, Session, System};
 use wasm_bindgen::prelude::*;
 
 use crate::files::Files;
@@ -29,286 +22,96 @@ use crate::views::{
 };
 use crate::{Msg, js, msg};
 
-/// The most wall time one [`Demo::step`] turns into simulated time: a tab that was in the
-/// background resumes where it was instead of catching up in one frame.
-const MAX_STEP_MS: f64 = 100.0;
-/// Speeds the page offers: 0.25× to 16× real time.
-const MIN_SPEED: f64 = 0.25;
-const MAX_SPEED: f64 = 16.0;
-/// How much simulated time the planning preview may take at most \[s\].
-const PREVIEW_SECONDS: f64 = 5.0;
 /// The reason an injected fault gives.
 const FAULT_REASON: &str = "requested from the page";
 
-/// Seconds → nanoseconds as the scenario runner rounds them.
-fn secs_to_ns(s: f64) -> u64 {
-    libm::round(s * 1e9) as u64
-}
-
-/// The page's handle: the system, its renderer and the page's clock settings.
+/// The page's handle: the session, its renderer and the layers shown.
 #[wasm_bindgen]
 #[derive(Debug)]
-pub struct Demo(Box<Inner>);
+pub struct Demo(pub(crate) Box<Inner>);
 
 /// What the handle holds.
 #[derive(Debug)]
 pub(crate) struct Inner {
-    system: System,
-    renderer: Renderer,
+    pub(crate) session: Session,
+    pub(crate) renderer: Renderer,
     layers: Layers,
-    speed: f64,
-    paused: bool,
-    /// Simulated time received but not yet a whole tick \[ns\].
-    pending_ns: u64,
-    scenario: Option<ScenarioView>,
-    map_name: String,
-    /// The scenario's timed events, relative to the start of the drive \[ns\], until the
-    /// robot starts.
-    script: Vec<(u64, ScenarioEvent)>,
-    /// Timed events other than map updates (those are queued on MapMaintenance), at
-    /// absolute simulated times, once the robot has started.
-    due: Vec<(u64, ScenarioEvent)>,
-    /// Events of the page's own (a scripted goal that was refused).
-    notes: Vec<EventView>,
-    /// Whether something changed since the last frame.
+    /// Whether something may have changed since the last frame.
     dirty: bool,
-    /// Whether the page asked for a plan during DriveControl's current spell without a path.
-    resume_asked: bool,
 }
 
 impl Inner {
-    /// An empty system (no map) and a `width × height` renderer.
+    /// An empty session (no map) and a `width × height` renderer.
     pub(crate) fn new(width: u32, height: u32) -> Msg<Self> {
-        let mut system = System::new(Rates::default()).map_err(msg)?;
-        system.set_full_field(true);
         Ok(Self {
-            system,
+            session: Session::new().map_err(msg)?,
             renderer: Renderer::new(width, height).map_err(msg)?,
             layers: Layers::ALL,
-            speed: 1.0,
-            paused: false,
-            pending_ns: 0,
-            scenario: None,
-            map_name: String::new(),
-            script: Vec::new(),
-            due: Vec::new(),
-            notes: Vec::new(),
             dirty: true,
-            resume_asked: false,
         })
+    }
+
+    pub(crate) fn system(&self) -> &System {
+        self.session.system()
+    }
+
+    /// A request that may change what is drawn.
+    pub(crate) fn changed<T>(&mut self, r: rtnav::Result<T>) -> Msg<T> {
+        self.dirty = true;
+        r.map_err(msg)
     }
 
     // ------------------------------------------------------------------ loading
 
-    /// Builds the system of a scenario ([`System::from_scenario`]: rates, configuration,
-    /// map, start and goal; nothing activated) and previews its plan. The scenario's timed
-    /// events wait for the drive to start. On an error the current system stays.
+    /// Loads a scenario ([`Session::load_scenario`]). On an error the current one stays.
     pub(crate) fn load_scenario(&mut self, json: &str, files: &Files) -> Msg<()> {
         let scenario = Scenario::from_json(json).map_err(msg)?;
-        let timeless = Scenario {
-            events: Vec::new(),
-            ..scenario.clone()
-        };
-        let mut system = System::from_scenario(&timeless, &files.resolver()).map_err(msg)?;
-        system.set_full_field(true);
-        system
-            .preview(PREVIEW_SECONDS)
-            .map_err(|e| format!("scenario `{}`: preview: {e}", scenario.name))?;
-        self.map_name = match &scenario.map {
-            MapSource::Json { path } | MapSource::Movingai { path, .. } => path.clone(),
-            MapSource::Ros { yaml, .. } => yaml.clone(),
-        };
-        self.script = scenario
-            .events
-            .iter()
-            .map(|e| (secs_to_ns(e.at()), e.clone()))
-            .collect();
-        self.scenario = Some(ScenarioView {
-            name: scenario.name,
-            description: scenario.description,
-            lesson: scenario.lesson,
-        });
-        self.replace_system(system);
+        let name = scenario.name.clone();
+        self.session
+            .load_scenario(scenario, files.resolver())
+            .map_err(|e| format!("scenario `{name}`: {e}"))?;
+        self.replaced();
         Ok(())
     }
 
-    /// Loads a map the user picked into a fresh system with the planning components active
-    /// and no start or goal. On an error (a bad file) the current map and system stay.
+    /// Loads the map file(s) the user picked ([`Session::load_map`]). On an error (a bad
+    /// file) the current map and system stay.
     pub(crate) fn load_map_files(&mut self, files: &Files, movingai_grid_size: f64) -> Msg<()> {
         let (name, map) = files.load_map(movingai_grid_size)?;
-        self.load_map(name, map)
+        self.load_map(&name, map)
     }
 
-    fn load_map(&mut self, name: String, map: GridMap) -> Msg<()> {
-        let mut system = System::new(Rates::default()).map_err(msg)?;
-        system.set_full_field(true);
-        system.load_map(map);
-        for kind in ComponentKind::PLANNING {
-            system.activate(kind).map_err(msg)?;
-        }
-        self.map_name = name;
-        self.scenario = None;
-        self.script.clear();
-        self.replace_system(system);
+    fn load_map(&mut self, name: &str, map: GridMap) -> Msg<()> {
+        self.session.load_map(name, map).map_err(msg)?;
+        self.replaced();
         Ok(())
     }
 
-    fn replace_system(&mut self, system: System) {
-        self.system = system;
-        self.due.clear();
-        self.notes.clear();
-        self.pending_ns = 0;
+    pub(crate) fn replaced(&mut self) {
         self.renderer.invalidate();
         self.dirty = true;
     }
 
     // ------------------------------------------------------------------ time
 
-    /// Advances simulated time by `elapsed_ms` of wall time × the speed, in whole ticks
-    /// (the remainder is kept; nothing while paused; at most 100 ms of wall time per call;
-    /// negative or non-finite counts as 0). Returns the number of ticks run.
+    /// [`Session::advance`]. Returns the number of ticks run.
     pub(crate) fn step(&mut self, elapsed_ms: f64) -> u32 {
-        if self.paused {
-            return 0;
+        let ticks = self.session.advance(elapsed_ms);
+        if ticks > 0 {
+            self.dirty = true;
         }
-        let ms = if elapsed_ms.is_finite() {
-            elapsed_ms.clamp(0.0, MAX_STEP_MS)
-        } else {
-            0.0
-        };
-        self.pending_ns += libm::round(ms * self.speed * 1e6) as u64;
-        let base = self.system.execution_context().base_period_ns();
-        let ticks = self.pending_ns / base;
-        self.pending_ns %= base;
-        self.run_ticks(ticks);
         // At most 100 ms × 16 of 1 ms ticks: fits.
         u32::try_from(ticks).unwrap_or(u32::MAX)
     }
 
-    /// Runs `ticks` base ticks (paused or not), applying due scenario events on time.
+    /// Runs `ticks` base ticks (paused or not).
     pub(crate) fn run_ticks(&mut self, ticks: u64) {
-        if ticks == 0 {
-            return;
-        }
-        if self.due.is_empty() {
-            self.system.step(ticks);
-        } else {
-            for _ in 0..ticks {
-                self.apply_due();
-                self.system.step(1);
-            }
-            self.apply_due();
-        }
-        self.resume_if_idle();
+        self.session.step_ticks(ticks);
         self.dirty = true;
     }
 
-    /// DriveControl starts without a path when it is activated (after a Reset, or a
-    /// Deactivate), and LocalPathPlanning sends a path only when it changes: the robot would
-    /// stand still before a goal it still holds. As InventGUI's operator would, the page
-    /// then sends the held goal again (`SetPosition` from where the robot is) — once per
-    /// such spell, only while the robot drives, with a goal held, not reached, not halted.
-    fn resume_if_idle(&mut self) {
-        let idle = matches!(
-            self.system.drive_control().status(),
-            DriveStatus::Driving(DrivePhase::Idle)
-        );
-        if !idle {
-            self.resume_asked = false;
-            return;
-        }
-        let s = &self.system;
-        let Some(goal) = s.goal() else {
-            return;
-        };
-        if self.resume_asked
-            || !s.is_driving()
-            || s.is_arrived()
-            || s.is_halted()
-            || s.component_state(ComponentKind::LocalPathPlanning) != LifecycleState::Active
-        {
-            return;
-        }
-        self.resume_asked = true;
-        let direction = s.direction();
-        let text = match self.system.set_goal(goal, direction) {
-            Ok(()) => {
-                "DriveControl had no path after its activation: the goal was sent again".to_owned()
-            }
-            Err(e) => format!("DriveControl has no path; sending the goal again was refused: {e}"),
-        };
-        self.notes.push(EventView {
-            time_s: self.system.time(),
-            kind: "GoalResent".to_owned(),
-            level: "info",
-            text,
-            data: serde_json::Value::Null,
-        });
-    }
-
-    fn apply_due(&mut self) {
-        let now = self.system.time_ns();
-        while let Some((at, _)) = self.due.first()
-            && *at <= now
-        {
-            let (_, event) = self.due.remove(0);
-            match event {
-                ScenarioEvent::Goal {
-                    goal, direction, ..
-                } => {
-                    if let Err(e) = self.system.set_goal(goal.pose(), direction.direction()) {
-                        self.notes.push(EventView {
-                            time_s: now as f64 * 1e-9,
-                            kind: "ScenarioGoalRefused".to_owned(),
-                            level: "warn",
-                            text: format!("the scenario's next goal was refused: {e}"),
-                            data: serde_json::Value::Null,
-                        });
-                    }
-                }
-                ScenarioEvent::SafeMode { .. } => self.system.safe_mode(),
-                ScenarioEvent::Clear { .. } => self.system.clear(),
-                _ => {}
-            }
-        }
-    }
-
-    /// Once the robot drives, the scenario's timed events are queued from now: map updates
-    /// on MapMaintenance (which sends them on time), the rest for [`Inner::run_ticks`].
-    fn start_script(&mut self) {
-        if self.script.is_empty() || !self.system.is_driving() {
-            return;
-        }
-        let now = self.system.time_ns();
-        for (at, event) in std::mem::take(&mut self.script) {
-            match &event {
-                ScenarioEvent::MapUpdate {
-                    boxes,
-                    cells,
-                    value,
-                    ..
-                } => {
-                    let Some(map) = self.system.map() else {
-                        continue;
-                    };
-                    let update = Scenario::map_update(map, boxes, cells, *value);
-                    // Checked when the scenario was written for this map; a refusal is
-                    // the core's event.
-                    let _ = self.system.schedule_map_update(now + at, update);
-                }
-                _ => self.due.push((now + at, event)),
-            }
-        }
-    }
-
     pub(crate) fn set_speed(&mut self, speed: f64) -> Msg<()> {
-        if !(MIN_SPEED..=MAX_SPEED).contains(&speed) {
-            return Err(format!(
-                "speed {speed}× is outside {MIN_SPEED}× to {MAX_SPEED}×"
-            ));
-        }
-        self.speed = speed;
-        Ok(())
+        self.session.set_speed(speed).map_err(msg)
     }
 
     // ------------------------------------------------------------------ lifecycle
@@ -317,76 +120,56 @@ impl Inner {
         ComponentKind::from_name(name).map_err(msg)
     }
 
-    fn changed<T>(&mut self, r: rtnav::Result<T>) -> Msg<T> {
-        self.dirty = true;
-        self.start_script();
-        r.map_err(msg)
-    }
-
     pub(crate) fn activate(&mut self, name: &str) -> Msg<LifecycleState> {
-        let r = self.system.activate(Self::kind(name)?);
+        let r = self.session.activate(Self::kind(name)?);
         self.changed(r)
     }
 
     pub(crate) fn deactivate(&mut self, name: &str) -> Msg<LifecycleState> {
-        let r = self.system.deactivate(Self::kind(name)?);
+        let r = self.session.deactivate(Self::kind(name)?);
         self.changed(r)
     }
 
     pub(crate) fn reset(&mut self, name: &str) -> Msg<LifecycleState> {
-        let r = self.system.reset(Self::kind(name)?);
+        let r = self.session.reset(Self::kind(name)?);
         self.changed(r)
     }
 
     pub(crate) fn inject_fault(&mut self, name: &str) -> Msg<()> {
-        let r = self.system.inject_fault(Self::kind(name)?, FAULT_REASON);
+        let r = self.session.inject_fault(Self::kind(name)?, FAULT_REASON);
+        self.changed(r)
+    }
+
+    pub(crate) fn inject_input(&mut self, name: &str, port: &str, values: Vec<f64>) -> Msg<()> {
+        let r = self.session.inject_input(Self::kind(name)?, port, values);
         self.changed(r)
     }
 
     pub(crate) fn activate_all(&mut self) -> String {
-        let s = self.system.activate_all();
         self.dirty = true;
-        self.start_script();
-        s.to_string()
+        self.session.activate_all().to_string()
     }
 
     pub(crate) fn deactivate_all(&mut self) -> String {
         self.dirty = true;
-        self.system.deactivate_all().to_string()
+        self.session.deactivate_all().to_string()
     }
 
     pub(crate) fn reset_all(&mut self) -> String {
         self.dirty = true;
-        self.system.reset_all().to_string()
+        self.session.reset_all().to_string()
     }
 
     // ------------------------------------------------------------------ inputs
 
-    /// After a new start or goal while the robot stands, with the planners running: plan
-    /// now, so the new path and its potential field are drawn at once.
-    fn after_goal(&mut self) -> Msg<()> {
-        self.dirty = true;
-        let planners_active = ComponentKind::PLANNING
-            .iter()
-            .all(|&k| self.system.component_state(k) == LifecycleState::Active);
-        if !self.system.is_driving() && planners_active {
-            self.system.preview(PREVIEW_SECONDS).map_err(msg)?;
-        }
-        Ok(())
-    }
-
     pub(crate) fn set_position(&mut self, start: Pose, goal: Pose, backward: bool) -> Msg<()> {
-        self.system
-            .set_position(start, goal, direction(backward))
-            .map_err(msg)?;
-        self.after_goal()
+        let r = self.session.set_position(start, goal, direction(backward));
+        self.changed(r)
     }
 
     pub(crate) fn set_goal(&mut self, goal: Pose, backward: bool) -> Msg<()> {
-        self.system
-            .set_goal(goal, direction(backward))
-            .map_err(msg)?;
-        self.after_goal()
+        let r = self.session.set_goal(goal, direction(backward));
+        self.changed(r)
     }
 
     pub(crate) fn set_cells(&mut self, xs: &[i32], ys: &[i32], value: i16) -> Msg<usize> {
@@ -402,18 +185,17 @@ impl Inner {
             .zip(ys)
             .map(|(&x, &y)| (i64::from(x), i64::from(y), value))
             .collect();
-        let update = MapUpdate::from_cells(&cells, Time::default());
-        let r = self.system.map_update(update);
+        let r = self.session.set_cells(&cells);
         self.changed(r)
     }
 
     pub(crate) fn clear(&mut self) {
-        self.system.clear();
+        self.session.clear();
         self.dirty = true;
     }
 
     pub(crate) fn safe_mode(&mut self) {
-        self.system.safe_mode();
+        self.session.safe_mode();
         self.dirty = true;
     }
 
@@ -425,17 +207,11 @@ impl Inner {
         if !self.dirty {
             return Ok(false);
         }
-        let Inner {
-            system,
-            renderer,
-            layers,
-            ..
-        } = self;
-        let Some(mut scene) = system.scene() else {
+        let Some(mut scene) = self.session.scene() else {
             return Ok(false);
         };
-        scene.layers = *layers;
-        renderer.render(&scene).map_err(msg)?;
+        scene.layers = self.layers;
+        self.renderer.render(&scene).map_err(msg)?;
         self.dirty = false;
         Ok(true)
     }
@@ -463,18 +239,23 @@ impl Inner {
         Ok(())
     }
 
-    fn view(&self) -> Option<rtnav::render::ViewTransform> {
-        self.system.map().map(|m| self.renderer.view(m))
+    pub(crate) fn layers(&self) -> Layers {
+        self.layers
+    }
+
+    pub(crate) fn view(&self) -> Option<rtnav::render::ViewTransform> {
+        self.system().map().map(|m| self.renderer.view(m))
     }
 
     // ------------------------------------------------------------------ reading
 
     pub(crate) fn components(&self) -> Vec<ComponentView> {
-        let ec = self.system.execution_context();
+        let system = self.system();
+        let ec = system.execution_context();
         ComponentKind::ALL
             .into_iter()
             .map(|kind| {
-                let info = self.system.component_info(kind);
+                let info = system.component_info(kind);
                 ComponentView {
                     name: kind.name(),
                     colour: info.state.editor_colour(),
@@ -486,21 +267,15 @@ impl Inner {
     }
 
     pub(crate) fn take_events(&mut self) -> Vec<EventView> {
-        let mut out: Vec<EventView> = self
-            .system
+        self.session
             .drain_events()
             .iter()
             .map(EventView::of)
-            .collect();
-        if !self.notes.is_empty() {
-            out.append(&mut self.notes);
-            out.sort_by(|a, b| a.time_s.total_cmp(&b.time_s));
-        }
-        out
+            .collect()
     }
 
     pub(crate) fn telemetry(&self) -> TelemetryView {
-        let s = &self.system;
+        let s = self.system();
         let pose = s.robot_pose();
         let stats = s.stats();
         let last = s.telemetry().last();
@@ -511,8 +286,8 @@ impl Inner {
             driving: s.is_driving(),
             arrived: s.is_arrived(),
             halted: s.is_halted(),
-            paused: self.paused,
-            speed: self.speed,
+            paused: self.session.paused(),
+            speed: self.session.speed(),
             pose: pose.into(),
             start: s.start().map(PoseView::from),
             goal: s.goal().map(PoseView::from),
@@ -536,7 +311,7 @@ impl Inner {
     }
 
     pub(crate) fn plan(&self) -> PlanView {
-        let s = &self.system;
+        let s = self.system();
         let lpp = s.local_path_planning();
         PlanView {
             start: s.start().map(PoseView::from),
@@ -551,7 +326,7 @@ impl Inner {
     }
 
     pub(crate) fn cell(&self, x: i32, y: i32) -> i32 {
-        match self.system.map() {
+        match self.system().map() {
             Some(m)
                 if x >= 0 && y >= 0 && (x as usize) < m.width() && (y as usize) < m.height() =>
             {
@@ -561,16 +336,25 @@ impl Inner {
         }
     }
 
+    pub(crate) fn scenario_view(&self) -> Option<ScenarioView> {
+        self.session.scenario().map(|s| ScenarioView {
+            name: s.name.clone(),
+            description: s.description.clone(),
+            lesson: s.lesson.clone(),
+        })
+    }
+
     pub(crate) fn map_view(&self) -> Option<MapView> {
-        let m = self.system.map()?;
+        let s = self.system();
+        let m = s.map()?;
         Some(MapView {
-            name: self.map_name.clone(),
+            name: self.session.map_name().to_owned(),
             width: m.width(),
             height: m.height(),
             grid_size: m.grid_size(),
             origin: m.origin(),
             obstacles: m.cells().iter().filter(|&&c| c != 0).count(),
-            key: self.system.map_key(),
+            key: s.map_key(),
         })
     }
 }
@@ -583,7 +367,7 @@ fn direction(backward: bool) -> Direction {
     }
 }
 
-fn json<T: serde::Serialize>(value: &T) -> Result<String, JsError> {
+pub(crate) fn json<T: serde::Serialize>(value: &T) -> Result<String, JsError> {
     serde_json::to_string(value).map_err(|e| js(msg(e)))
 }
 
@@ -622,7 +406,7 @@ impl Demo {
 
     /// The scenario loaded, as JSON `{name, description, lesson}`, or `null` (a map file).
     pub fn scenario_json(&self) -> Result<String, JsError> {
-        json(&self.0.scenario)
+        json(&self.0.scenario_view())
     }
 
     /// The map as JSON `{name, width, height, grid_size, origin, obstacles, key}`, or `null`.
@@ -650,17 +434,17 @@ impl Demo {
 
     /// Simulated time \[s\].
     pub fn time_s(&self) -> f64 {
-        self.0.system.time()
+        self.0.system().time()
     }
 
     /// Pauses or resumes the clock.
     pub fn set_paused(&mut self, paused: bool) {
-        self.0.paused = paused;
+        self.0.session.set_paused(paused);
     }
 
     /// Whether the clock is paused.
     pub fn paused(&self) -> bool {
-        self.0.paused
+        self.0.session.paused()
     }
 
     /// Sets the speed (simulated seconds per wall second), 0.25 to 16.
@@ -670,7 +454,7 @@ impl Demo {
 
     /// The speed.
     pub fn speed(&self) -> f64 {
-        self.0.speed
+        self.0.session.speed()
     }
 
     // ------------------------------------------------------------------ lifecycle
@@ -715,7 +499,7 @@ impl Demo {
 
     /// The system's state: `Inactive`, `Active`, `Partial` or `Error`.
     pub fn system_state(&self) -> String {
-        self.0.system.state().to_string()
+        self.0.system().state().to_string()
     }
 
     /// Every component as JSON: `[{name, kind, instance_name, state, colour, rate,
@@ -811,7 +595,7 @@ impl Demo {
 
     /// The layers as JSON `{occupancy: true, …}`.
     pub fn layers_json(&self) -> Result<String, JsError> {
-        json(&self.0.layers)
+        json(&self.0.layers())
     }
 
     /// Shows or hides a layer (`heat_map`, `trail`, …).
@@ -827,7 +611,7 @@ impl Demo {
 
     /// Frame pixel → map cell `[x, y]` (`undefined` outside the map).
     pub fn pixel_to_cell(&self, px: f64, py: f64) -> Option<Vec<u32>> {
-        let map = self.0.system.map()?;
+        let map = self.0.system().map()?;
         let (x, y) = self.0.renderer.view(map).pixel_to_cell(map, px, py)?;
         Some(vec![u32::try_from(x).ok()?, u32::try_from(y).ok()?])
     }
@@ -859,6 +643,20 @@ impl Demo {
     /// Start, goal, paths and control points as JSON.
     pub fn plan_json(&self) -> Result<String, JsError> {
         json(&self.0.plan())
+    }
+
+    // ------------------------------------------------------------------ faults
+
+    /// Writes one sample into a component's input port, as a connected output port would
+    /// (rtshell's `rtinject`): `Localization` `InSimulatedPosition` (`[x, y, z, θ]`) or
+    /// `InCurrentWheelAngle` (`[left, right]`). A NaN pose puts Localization in Error.
+    pub fn inject_input(
+        &mut self,
+        component: &str,
+        port: &str,
+        values: Vec<f64>,
+    ) -> Result<(), JsError> {
+        self.0.inject_input(component, port, values).map_err(js)
     }
 
     /// Panics on purpose, so the end-to-end test can prove the page shows a crash.

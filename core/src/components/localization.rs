@@ -9,8 +9,11 @@
 //! and integrates exact arcs ([`crate::motion::Odometry`]) with its own wheel geometry
 //! (which may differ from the simulated robot's: drift).
 //!
-//! A bad input (wrong length, non-finite, time not advancing) is ignored and reported; the
-//! held pose stays.
+//! **Decision (faults, issue 7)**: a non-finite number on either input is a fault — the pose
+//! can no longer be trusted, and publishing it would send NaN on to the planners and
+//! DriveControl — so `on_execute` fails with the port and field named, and the component goes
+//! to Error (SPEC §1); the held pose stays and Reset recovers. A wrong length or time not
+//! advancing is ignored and reported ([`Localization::last_error`]); the held pose stays.
 
 use crate::define_parameters;
 use crate::errors::MotionError;
@@ -176,6 +179,16 @@ impl Localization {
         Ok(())
     }
 
+    /// Records a bad input; a non-finite one is returned as the component's failure.
+    fn fail_if_fault(&mut self, e: MotionError) -> Result<(), ComponentError> {
+        let fault = matches!(e, MotionError::NonFinite { .. });
+        self.last_error = Some(e.clone());
+        if fault {
+            return Err(ComponentError::from(crate::Error::from(e)));
+        }
+        Ok(())
+    }
+
     fn read_wheels(&mut self, msg: &TimedDoubleSeq) -> Result<(), MotionError> {
         const PORT: &str = "InCurrentWheelAngle";
         let (l, r) = self.wheel_ids;
@@ -227,18 +240,20 @@ impl Component for Localization {
         Ok(())
     }
 
+    /// Reads both inputs and publishes the selected pose. A non-finite input fails (→ Error,
+    /// nothing published); other bad input is ignored and reported.
     fn on_execute(&mut self, tick: &Tick) -> ReturnCode {
         if self.in_simulated_position.is_new()
             && let Some(msg) = self.in_simulated_position.read()
             && let Err(e) = self.read_simulated(&msg)
         {
-            self.last_error = Some(e);
+            self.fail_if_fault(e)?;
         }
         if self.in_current_wheel_angle.is_new()
             && let Some(msg) = self.in_current_wheel_angle.read()
             && let Err(e) = self.read_wheels(&msg)
         {
-            self.last_error = Some(e);
+            self.fail_if_fault(e)?;
         }
         let pose = self.current_pose();
         self.out_current_position.write(TimedPosition {

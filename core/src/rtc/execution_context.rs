@@ -75,11 +75,16 @@ pub struct LifecycleEvent {
     pub reason: Option<String>,
 }
 
+/// Data written into a component's input port from outside just before its next
+/// `on_execute` ([`ExecutionContext::inject_input`]).
+pub type InputInjection = Box<dyn FnOnce(&mut dyn Component)>;
+
 struct Slot {
     component: Box<dyn Component>,
     state: LifecycleState,
     period_ticks: u64,
     fault: Option<String>,
+    injections: Vec<InputInjection>,
     last_error: Option<String>,
 }
 
@@ -187,6 +192,7 @@ impl ExecutionContext {
             state: LifecycleState::Created,
             period_ticks,
             fault: None,
+            injections: Vec::new(),
             last_error: None,
         });
         self.initialize(id)?;
@@ -457,6 +463,21 @@ impl ExecutionContext {
         Ok(())
     }
 
+    /// Queues `write` to run on the component just before its next `on_execute`, after every
+    /// component before it in the tick has written its outputs — so the sample it puts into
+    /// an input port is the one the component reads (OpenRTM rtshell's `rtinject`, whose
+    /// sample arrives between two executions). Legal while Inactive or Active.
+    pub fn inject_input(
+        &mut self,
+        id: ComponentId,
+        write: InputInjection,
+    ) -> Result<(), LifecycleError> {
+        use LifecycleState::*;
+        self.check(id, Request::InjectFault, &[Inactive, Active], false)?;
+        self.slots[id].injections.push(write);
+        Ok(())
+    }
+
     /// Whether a fault is waiting for the component's next `on_execute`.
     pub fn fault_pending(&self, id: ComponentId) -> Result<bool, LifecycleError> {
         Ok(self.slot(id)?.fault.is_some())
@@ -523,6 +544,9 @@ impl ExecutionContext {
         let tick = self.tick_for(id);
         match self.slots[id].state {
             LifecycleState::Active => {
+                for write in core::mem::take(&mut self.slots[id].injections) {
+                    write(self.slots[id].component.as_mut());
+                }
                 let r: ReturnCode = match self.slots[id].fault.take() {
                     Some(reason) => Err(ComponentError::new(format!("injected fault: {reason}"))),
                     None => self.slots[id].component.on_execute(&tick),

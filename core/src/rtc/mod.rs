@@ -15,7 +15,7 @@ pub use config::{
     ConfigAccess, Configuration, DEFAULT_SET, ParamKind, ParamSpec, ParamType, ParameterSet,
     Reflection,
 };
-pub use execution_context::{ComponentId, ExecutionContext, LifecycleEvent};
+pub use execution_context::{ComponentId, ExecutionContext, InputInjection, LifecycleEvent};
 pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
 pub use port::{InPort, OutPort};
 pub use state::{ContextState, LifecycleState, Request};

@@ -106,6 +106,28 @@ pub enum EventKind {
     SafeMode,
     /// `Clear` was called: paths and goal dropped.
     Cleared,
+    /// DriveControl was activated with no path while a goal was held: the goal was sent
+    /// again from where the robot stands (see `System::activate`).
+    GoalResent {
+        /// Why sending it again was refused, if it was.
+        refused: Option<String>,
+    },
+    /// A request the system made on its own was refused (a scenario's timed goal, a replan
+    /// after a parameter change); the previous state stays.
+    RequestRefused {
+        /// What was asked.
+        request: String,
+        /// Why it was refused.
+        reason: String,
+    },
+    /// A sample was written into a component's input port from outside (rtshell's
+    /// `rtinject`; the page's "Sensor glitch").
+    InputInjected {
+        /// The component.
+        component: String,
+        /// The port.
+        port: String,
+    },
 }
 
 impl fmt::Display for SystemEvent {
@@ -175,6 +197,21 @@ impl fmt::Display for SystemEvent {
             } => write!(f, "{component}: {from} → {to}"),
             EventKind::SafeMode => f.write_str("SafeMode: halt"),
             EventKind::Cleared => f.write_str("Clear: paths and goal dropped"),
+            EventKind::GoalResent { refused: None } => f.write_str(
+                "DriveControl had no path after its activation: the goal was sent again",
+            ),
+            EventKind::GoalResent { refused: Some(r) } => {
+                write!(
+                    f,
+                    "DriveControl has no path; sending the goal again was refused: {r}"
+                )
+            }
+            EventKind::RequestRefused { request, reason } => {
+                write!(f, "{request} was refused: {reason}")
+            }
+            EventKind::InputInjected { component, port } => {
+                write!(f, "a sample was injected into {component}.{port}")
+            }
         }
     }
 }

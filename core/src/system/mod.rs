@@ -87,6 +87,8 @@ mod runtime;
 mod scenario;
 #[cfg(feature = "render")]
 mod scene;
+mod script;
+mod session;
 mod telemetry;
 
 pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound, could_be_below};
@@ -96,11 +98,18 @@ pub use rates::Rates;
 pub use runner::{
     ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, run_scenario,
 };
-pub use runtime::{ComponentInfo, EVENT_CAPACITY, RunStats, System, SystemState, TRAIL_CAPACITY};
+pub use runtime::{
+    ComponentInfo, EVENT_CAPACITY, PLAN_TIMES_CAPACITY, RunStats, System, SystemState,
+    TRAIL_CAPACITY,
+};
 #[cfg(not(target_arch = "wasm32"))]
 pub use scenario::DirResolver;
 pub use scenario::{
     BoxSpec, DirectionSpec, Expectation, FileResolver, MapSource, MemoryResolver, OutcomeKind,
     PoseSpec, Scenario, ScenarioEvent, UnknownSpec,
+};
+pub use session::{
+    ComponentParameters, MAX_PLOT_SECONDS, MAX_SPEED, MAX_STEP_MS, MIN_SPEED, PREVIEW_SECONDS,
+    ParameterView, PlotWindow, Session, Setup, TUNABLE,
 };
 pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};

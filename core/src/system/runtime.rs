@@ -11,6 +11,7 @@ use super::clearance::{ClearanceTracker, could_be_below};
 use super::events::{EventKind, SystemEvent};
 use super::kind::ComponentKind;
 use super::rates::Rates;
+use super::script::DriveScript;
 use super::telemetry::{Telemetry, TelemetrySample};
 use crate::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
@@ -23,11 +24,13 @@ use crate::map::{Cell, GridMap};
 use crate::motion::{BumpReport, ModelFrame, PhysicsParams, angle_diff};
 use crate::rtc::{
     Component, ComponentId, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState,
-    Time,
+    Time, TimedDoubleSeq,
 };
 
 /// How many events are kept (the oldest are dropped beyond this).
 pub const EVENT_CAPACITY: usize = 4096;
+/// How many plan times are kept (for the plots' replan marks).
+pub const PLAN_TIMES_CAPACITY: usize = 1024;
 /// How many trail points are kept.
 pub const TRAIL_CAPACITY: usize = 20_000;
 /// Trail points are at least this far apart \[m\].
@@ -149,6 +152,10 @@ pub struct System {
     /// While the system works after a tick: that tick's time (events are stamped with it).
     tick_time_ns: Option<u64>,
     clearance: ClearanceTracker,
+    /// A scenario's timed events counted from the start of the drive (the page's).
+    pub(super) script: DriveScript,
+    /// When global and local plans were made (the newest [`PLAN_TIMES_CAPACITY`]) \[ns\].
+    plan_times: VecDeque<u64>,
     #[cfg(feature = "render")]
     pub(super) scene_buffers: super::scene::SceneBuffers,
 }
@@ -290,6 +297,8 @@ impl System {
             halted: false,
             tick_time_ns: None,
             clearance: ClearanceTracker::new(),
+            script: DriveScript::default(),
+            plan_times: VecDeque::new(),
             #[cfg(feature = "render")]
             scene_buffers: Default::default(),
         };
@@ -483,8 +492,10 @@ impl System {
 
     /// Activates one component (Inactive → Active; a failing `on_activated` → Error).
     pub fn activate(&mut self, kind: ComponentKind) -> crate::Result<LifecycleState> {
+        let drive_was_active = self.drive_control_active();
         let r = self.ec.activate(Self::id(kind));
         self.after_request();
+        self.resume_after_activation(drive_was_active);
         Ok(r?)
     }
 
@@ -509,6 +520,7 @@ impl System {
     }
 
     fn activate_set(&mut self, kinds: &[ComponentKind]) -> SystemState {
+        let drive_was_active = self.drive_control_active();
         for &kind in kinds {
             if self.component_state(kind) == LifecycleState::Inactive {
                 // Cannot fail: Inactive and the context is Running; a failing
@@ -517,7 +529,94 @@ impl System {
             }
         }
         self.after_request();
+        self.resume_after_activation(drive_was_active);
         self.state()
+    }
+
+    fn drive_control_active(&self) -> bool {
+        self.component_state(ComponentKind::DriveControl) == LifecycleState::Active
+    }
+
+    /// DriveControl starts without a path when it is activated (after a Reset or a
+    /// Deactivate), and LocalPathPlanning sends a path only when it changes (000
+    /// §5.2.4.13): the robot would stand before a goal the system still holds. **Decision**:
+    /// when DriveControl has just been activated with no path waiting on its
+    /// `InControlPoints`, while a goal is held, not reached, not halted, and
+    /// LocalPathPlanning is Active and had sent its path, the system sends the held goal
+    /// again from where the robot stands ([`System::set_goal`]), as InventGUI's operator
+    /// would; [`EventKind::GoalResent`] says so. (At a headless run's start nothing has been
+    /// sent yet, so this never fires there.)
+    fn resume_after_activation(&mut self, drive_was_active: bool) {
+        if drive_was_active || !self.drive_control_active() {
+            return;
+        }
+        let Some(goal) = self.goal else {
+            return;
+        };
+        let waiting = self
+            .get::<DriveControl>(ComponentKind::DriveControl)
+            .in_control_points
+            .is_new();
+        if waiting
+            || self.arrived
+            || self.halted
+            || self.local_sent_epoch != self.goal_epoch
+            || self.goal_epoch == 0
+            || self.component_state(ComponentKind::LocalPathPlanning) != LifecycleState::Active
+        {
+            return;
+        }
+        let direction = self.direction;
+        let reason = self.set_goal(goal, direction).err().map(|e| e.to_string());
+        self.push_event(EventKind::GoalResent { refused: reason });
+    }
+
+    /// Writes one sample into a component's input port, as a connected output port would
+    /// (OpenRTM rtshell's `rtinject`), just before the component's next execution
+    /// ([`ExecutionContext::inject_input`]): the page's "Sensor glitch" sends a NaN pose to
+    /// Localization. Known ports: Localization's `InSimulatedPosition` (`[X, Y, Z, θ]`) and
+    /// `InCurrentWheelAngle` (`[left, right]` rad). The data is not checked here — that is
+    /// the receiving component's job (a non-finite pose puts Localization in Error).
+    pub fn inject_input(
+        &mut self,
+        kind: ComponentKind,
+        port: &str,
+        data: Vec<f64>,
+    ) -> crate::Result<()> {
+        if !(kind == ComponentKind::Localization
+            && matches!(port, "InSimulatedPosition" | "InCurrentWheelAngle"))
+        {
+            return Err(SystemError::UnknownPort {
+                component: kind.name().to_owned(),
+                port: port.to_owned(),
+                known: "Localization.InSimulatedPosition, Localization.InCurrentWheelAngle",
+            }
+            .into());
+        }
+        let message = TimedDoubleSeq {
+            tm: Time::from_nanos(self.time_ns()),
+            data,
+        };
+        let simulated = port == "InSimulatedPosition";
+        self.ec.inject_input(
+            Self::id(kind),
+            Box::new(move |c: &mut dyn Component| {
+                let c: &mut dyn core::any::Any = c;
+                if let Some(l) = c.downcast_mut::<Localization>() {
+                    let target = if simulated {
+                        &l.in_simulated_position
+                    } else {
+                        &l.in_current_wheel_angle
+                    };
+                    target.put(message);
+                }
+            }),
+        )?;
+        self.push_event(EventKind::InputInjected {
+            component: kind.name().to_owned(),
+            port: port.to_owned(),
+        });
+        Ok(())
     }
 
     /// Deactivates every Active component, in reverse attachment order (DriveControl sends
@@ -838,20 +937,41 @@ impl System {
 
     // ------------------------------------------------------------------ events, telemetry
 
-    fn push_event(&mut self, kind: EventKind) {
+    pub(super) fn push_event(&mut self, kind: EventKind) {
         if self.events.len() == EVENT_CAPACITY {
             self.events.pop_front();
         }
-        self.events.push_back(SystemEvent {
-            time_ns: self.tick_time_ns.unwrap_or_else(|| self.ec.time_ns()),
+        let time_ns = self.tick_time_ns.unwrap_or_else(|| self.ec.time_ns());
+        let plan = matches!(
             kind,
-        });
+            EventKind::GlobalPlan { .. } | EventKind::LocalPlanSent { cells: 1.., .. }
+        );
+        if plan {
+            if self.plan_times.len() == PLAN_TIMES_CAPACITY {
+                self.plan_times.pop_front();
+            }
+            self.plan_times.push_back(time_ns);
+        }
+        self.events.push_back(SystemEvent { time_ns, kind });
         self.event_total += 1;
     }
 
     /// The events kept (the newest [`EVENT_CAPACITY`]), oldest first.
     pub fn events(&self) -> &VecDeque<SystemEvent> {
         &self.events
+    }
+
+    /// When the newest global and local plans were made \[ns\], oldest first (kept apart
+    /// from the events, which the GUI drains).
+    pub fn plan_times(&self) -> impl Iterator<Item = u64> + '_ {
+        self.plan_times.iter().copied()
+    }
+
+    /// MotorControl's service `Motor::SetPDGain(PGainL, PGainR, DGainL, DGainR)` (002
+    /// §3.2.2.1 (1)): the four gains at once; all checked first, nothing changes on an error.
+    pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
+        self.get_mut::<MotorControl>(ComponentKind::MotorControl)
+            .set_pd_gain(p_l, p_r, d_l, d_r)
     }
 
     /// Takes the events kept.
@@ -903,7 +1023,13 @@ impl System {
     /// Runs `ticks` base ticks.
     pub fn step(&mut self, ticks: u64) {
         for _ in 0..ticks {
+            if self.script.has_due() {
+                self.apply_due_script();
+            }
             self.tick();
+        }
+        if self.script.has_due() {
+            self.apply_due_script();
         }
     }
 
@@ -1051,6 +1177,7 @@ impl System {
     /// After a lifecycle request: the events it caused.
     fn after_request(&mut self) {
         self.pump();
+        self.start_drive_script();
     }
 
     fn drain_lifecycle_events(&mut self) {

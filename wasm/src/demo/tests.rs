@@ -44,7 +44,7 @@ fn kinds(events: &[EventView]) -> Vec<&str> {
 
 /// Runs simulated seconds in page-sized steps (16 ms of wall time at the current speed).
 fn run(demo: &mut Inner, seconds: f64, stop: impl Fn(&Inner) -> bool) -> bool {
-    let frames = (seconds * 1000.0 / (16.0 * demo.speed)) as usize;
+    let frames = (seconds * 1000.0 / (16.0 * demo.session.speed())) as usize;
     for _ in 0..frames {
         demo.step(16.0);
         if stop(demo) {
@@ -66,18 +66,18 @@ fn step_turns_wall_time_times_speed_into_whole_ticks() {
     assert_eq!([16.0, 16.0].map(|ms| demo.step(ms)), [4, 4]);
     demo.set_speed(16.0).unwrap();
     assert_eq!(demo.step(16.0), 256);
-    demo.paused = true;
+    demo.session.set_paused(true);
     assert_eq!(demo.step(16.0), 0);
     demo.run_ticks(1);
     assert_eq!(
-        demo.system.time_ns(),
+        demo.system().time_ns(),
         (16 + 1 + 1 + 100 + 8 + 256 + 1) * 1_000_000
     );
     assert_eq!(
         demo.set_speed(32.0).unwrap_err(),
         "speed 32× is outside 0.25× to 16×"
     );
-    assert_eq!(demo.speed, 16.0);
+    assert_eq!(demo.session.speed(), 16.0);
 }
 
 #[test]
@@ -97,7 +97,7 @@ fn a_scenario_loads_with_its_plan_and_the_robot_waiting() {
             ("DriveControl", Inactive),
         ]
     );
-    assert_eq!(demo.system.state().to_string(), "Partial");
+    assert_eq!(demo.system().state().to_string(), "Partial");
     let plan = demo.plan();
     assert_eq!(
         plan.goal,
@@ -114,7 +114,7 @@ fn a_scenario_loads_with_its_plan_and_the_robot_waiting() {
     for expected in ["MapLoaded", "GoalSet", "GlobalPlan", "LocalPlanSent"] {
         assert!(k.contains(&expected), "{expected} missing from {k:?}");
     }
-    let scenario = demo.scenario.as_ref().unwrap();
+    let scenario = demo.scenario_view().unwrap();
     assert_eq!(scenario.name, "open_field");
     let map = demo.map_view().unwrap();
     assert_eq!(map.name, "fixtures/maps/scenarios/open_field.json");
@@ -131,7 +131,7 @@ fn activate_all_drives_to_the_goal() {
     let mut demo = loaded("open_field");
     assert_eq!(demo.activate_all(), "Active");
     demo.set_speed(16.0).unwrap();
-    assert!(run(&mut demo, 120.0, |d| d.system.is_arrived()));
+    assert!(run(&mut demo, 120.0, |d| d.system().is_arrived()));
     let t = demo.telemetry();
     assert!(t.arrived && t.distance_to_goal.unwrap() <= 0.1, "{t:?}");
     assert_eq!(t.bumps, 0);
@@ -150,7 +150,7 @@ fn a_goal_inside_an_obstacle_is_refused_and_the_old_plan_stays() {
     let before = demo.plan();
     demo.take_events();
     // Cell (0, 0) is the fence.
-    let map = demo.system.map().unwrap();
+    let map = demo.system().map().unwrap();
     assert!(map.is_obstacle(0, 0));
     let (x, y) = map.cell_center((0, 0));
     let err = demo.set_goal(Pose::new(x, y, 0.0), false).unwrap_err();
@@ -176,7 +176,7 @@ fn inject_fault_error_with_reason_reset_and_activate_again() {
         dc.info.last_error.as_deref(),
         Some("injected fault: requested from the page")
     );
-    assert_eq!(demo.system.state().to_string(), "Error");
+    assert_eq!(demo.system().state().to_string(), "Error");
     let events = demo.take_events();
     let error = events.iter().find(|e| e.kind == "ComponentError").unwrap();
     assert_eq!(error.level, "error");
@@ -194,7 +194,7 @@ fn inject_fault_error_with_reason_reset_and_activate_again() {
         demo.activate("DriveControl").unwrap(),
         LifecycleState::Active
     );
-    assert_eq!(demo.system.state().to_string(), "Active");
+    assert_eq!(demo.system().state().to_string(), "Active");
     assert_eq!(
         demo.activate("Planner").unwrap_err(),
         "no component named `Planner` (expected one of MapBuilder, MapMaintenance, \
@@ -208,8 +208,8 @@ fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
     let mut demo = loaded("open_field");
     demo.activate_all();
     run(&mut demo, 2.0, |_| false);
-    let pose = demo.system.robot_pose();
-    let map = demo.system.map().unwrap();
+    let pose = demo.system().robot_pose();
+    let map = demo.system().map().unwrap();
     let (cx, cy) = map.world_to_cell(pose.x, pose.y).unwrap();
     let (xs, ys): (Vec<i32>, Vec<i32>) = (-1..=1)
         .flat_map(|dx| (-1..=1).map(move |dy| (cx as i32 + dx, cy as i32 + dy)))
@@ -231,17 +231,17 @@ fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
     let events = demo.take_events();
     assert!(kinds(&events).contains(&"Bump"));
     let goal = demo.plan().goal;
-    let where_ = demo.system.robot_pose();
+    let where_ = demo.system().robot_pose();
     assert_eq!(demo.reset_all(), "Inactive");
     assert_eq!(demo.plan().goal, goal);
-    assert_eq!(demo.system.robot_pose(), where_);
+    assert_eq!(demo.system().robot_pose(), where_);
     assert_eq!(demo.cell(cx as i32, cy as i32), 1);
     // Erase the obstacle: the robot can drive on.
     demo.set_cells(&xs, &ys, 0).unwrap();
     assert_eq!(demo.activate_all(), "Active");
     demo.set_speed(16.0).unwrap();
     // DriveControl starts afresh; the page asks for a plan and the robot drives on.
-    assert!(run(&mut demo, 120.0, |d| d.system.is_arrived()));
+    assert!(run(&mut demo, 120.0, |d| d.system().is_arrived()));
     let events = demo.take_events();
     let resent: Vec<&EventView> = events.iter().filter(|e| e.kind == "GoalResent").collect();
     assert_eq!(resent.len(), 1);
@@ -284,7 +284,7 @@ fn an_obstacle_painted_on_the_path_is_driven_around() {
         .collect();
     let plan = demo.plan();
     assert!(plan.local_path.iter().all(|c| !block.contains(c)));
-    assert!(run(&mut demo, 120.0, |d| d.system.is_arrived()));
+    assert!(run(&mut demo, 120.0, |d| d.system().is_arrived()));
     assert_eq!(demo.telemetry().bumps, 0);
 }
 
@@ -297,7 +297,7 @@ fn a_bad_map_file_is_refused_and_the_map_stays() {
     let err = demo.load_map_files(&bad, 1.0).unwrap_err();
     assert!(err.starts_with("`broken.json`: rtnav JSON"), "{err}");
     assert_eq!(demo.map_view(), before);
-    assert_eq!(demo.scenario.as_ref().unwrap().name, "open_field");
+    assert_eq!(demo.scenario_view().unwrap().name, "open_field");
     // A good one replaces the scenario: planners Active, no goal yet.
     let mut good = Files::new();
     let wall = "#".repeat(20);
@@ -313,8 +313,8 @@ fn a_bad_map_file_is_refused_and_the_map_stays() {
         (map.name.as_str(), map.width, map.height),
         ("room.json", 20, 10)
     );
-    assert!(demo.scenario.is_none() && demo.plan().goal.is_none());
-    assert_eq!(demo.system.state().to_string(), "Partial");
+    assert!(demo.scenario_view().is_none() && demo.plan().goal.is_none());
+    assert_eq!(demo.system().state().to_string(), "Partial");
     demo.set_position(Pose::new(1.0, 1.2, 0.0), Pose::new(4.0, 1.2, 0.0), false)
         .unwrap();
     assert!(!demo.plan().global_path.is_empty());
@@ -329,7 +329,7 @@ fn a_scenarios_timed_obstacle_counts_from_the_start_of_the_drive() {
     assert_eq!(demo.map_view().unwrap().obstacles, obstacles);
     demo.activate_all();
     demo.set_speed(16.0).unwrap();
-    assert!(run(&mut demo, 120.0, |d| d.system.is_arrived()));
+    assert!(run(&mut demo, 120.0, |d| d.system().is_arrived()));
     assert!(demo.map_view().unwrap().obstacles > obstacles);
     assert!(demo.telemetry().local_plans >= 1);
     assert_eq!(demo.telemetry().bumps, 0);

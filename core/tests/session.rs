@@ -1,0 +1,264 @@
+//! The interactive session (what the page drives): share links reproduce the set-up and the
+//! first frame, a changed planning parameter is planned at once, a NaN pose puts
+//! Localization in Error and Reset recovers, the plot window.
+
+use std::path::Path;
+
+use rtnav::interfaces::{Direction, Pose};
+use rtnav::render::Renderer;
+use rtnav::rtc::LifecycleState;
+use rtnav::system::{ComponentKind, EventKind, MapSource, MemoryResolver, Scenario, Session};
+
+fn root() -> &'static Path {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+}
+
+fn scenario(name: &str) -> (Scenario, MemoryResolver) {
+    let json =
+        std::fs::read_to_string(root().join(format!("fixtures/scenarios/{name}.json"))).unwrap();
+    let s = Scenario::from_json(&json).unwrap();
+    let MapSource::Json { path } = &s.map else {
+        panic!("test scenarios use JSON maps");
+    };
+    let files = MemoryResolver::new().with(path, std::fs::read(root().join(path)).unwrap());
+    (s, files)
+}
+
+fn loaded(name: &str) -> Session {
+    let (s, files) = scenario(name);
+    let mut session = Session::new().unwrap();
+    session.load_scenario(s, files).unwrap();
+    session
+}
+
+fn frame(session: &mut Session) -> Vec<u8> {
+    let mut renderer = Renderer::new(640, 400).unwrap();
+    let scene = session.scene().unwrap();
+    renderer.render(&scene).unwrap();
+    renderer.frame().data().to_vec()
+}
+
+fn value(session: &mut Session, component: &str, name: &str) -> (f64, f64, bool) {
+    let view = session.parameters_view();
+    let p = view
+        .iter()
+        .find(|c| c.component == component)
+        .unwrap()
+        .params
+        .iter()
+        .find(|p| p.name == name)
+        .unwrap();
+    (p.value, p.effective, p.pending)
+}
+
+#[test]
+fn a_share_token_reproduces_the_set_up_and_the_first_frame() {
+    let mut a = loaded("open_field");
+    // Time passes, cells are painted, parameters change, the goal moves.
+    a.advance(100.0);
+    let painted = [(12, 6, 1), (12, 7, 1), (13, 6, 1)];
+    assert_eq!(a.set_cells(&painted).unwrap(), 3);
+    a.set_param(
+        ComponentKind::LocalPathPlanning,
+        "PostureConsiderationLevel",
+        "20",
+    )
+    .unwrap();
+    a.set_param(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
+        .unwrap();
+    a.set_goal(Pose::new(22.0, 14.0, 0.5), Direction::Forward)
+        .unwrap();
+    a.advance(100.0);
+    let token = a.share_token().unwrap();
+    assert!(
+        token
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b'_')
+    );
+    let setup = a.setup().unwrap();
+    assert_eq!(setup.edits, vec![[12, 6, 1], [12, 7, 1], [13, 6, 1]]);
+    assert_eq!(
+        setup.params["LocalPathPlanning"]["PostureConsiderationLevel"],
+        20.0
+    );
+    assert_eq!(setup.params["MotorControl"]["lengthOfAxle"], 0.5);
+    assert_eq!(setup.params.len(), 2, "only what differs from the scenario");
+
+    assert_eq!(Session::share_scenario(&token).unwrap(), "open_field");
+    let mut b = loaded("open_field");
+    b.apply_share(&token).unwrap();
+    assert_eq!(b.setup().unwrap(), setup);
+    assert_eq!(b.parameters_view(), a.parameters_view());
+    assert_eq!(b.system().time_ns(), a.system().time_ns());
+    assert!(frame(&mut b) == frame(&mut a), "identical first frame");
+    assert!(b.system().map().unwrap().is_obstacle(12, 6));
+}
+
+#[test]
+fn a_bad_or_foreign_token_is_refused_and_nothing_changes() {
+    let mut a = loaded("corridor_turn");
+    let token = a.share_token().unwrap();
+    let mut b = loaded("open_field");
+    let before = b.setup().unwrap();
+    let err = b.apply_share(&token).unwrap_err().to_string();
+    assert_eq!(
+        err,
+        "share link: it was made for scenario `corridor_turn`, but `open_field` is loaded"
+    );
+    for junk in ["", "!!!", "AAAA", &token[..token.len() / 2]] {
+        let e = b.apply_share(junk).unwrap_err().to_string();
+        assert!(e.starts_with("share link: "), "{e}");
+    }
+    assert_eq!(b.setup().unwrap(), before);
+}
+
+#[test]
+fn a_link_needs_a_scenario() {
+    let mut s = Session::new().unwrap();
+    let map = rtnav::map::GridMap::new(10, 10, 0.1, (0.0, 0.0), vec![0; 100]).unwrap();
+    s.load_map("free.json", map).unwrap();
+    assert_eq!(
+        s.share_token().unwrap_err().to_string(),
+        "share link: a share link needs a scenario; this map was loaded from a file"
+    );
+}
+
+#[test]
+fn posture_consideration_changes_the_next_plan_at_once() {
+    let mut s = loaded("parking_wall");
+    s.set_param(
+        ComponentKind::LocalPathPlanning,
+        "PostureConsiderationLevel",
+        "0",
+    )
+    .unwrap();
+    let low = s.system().local_path_planning().merged_path().to_vec();
+    s.set_param(
+        ComponentKind::LocalPathPlanning,
+        "PostureConsiderationLevel",
+        "100",
+    )
+    .unwrap();
+    let high = s.system().local_path_planning().merged_path().to_vec();
+    assert_eq!(
+        value(&mut s, "LocalPathPlanning", "PostureConsiderationLevel"),
+        (100.0, 100.0, false)
+    );
+    assert!(!low.is_empty() && !high.is_empty());
+    assert_ne!(low, high);
+    // Out of range: refused with the reason, the value stays.
+    let e = s
+        .set_param(
+            ComponentKind::LocalPathPlanning,
+            "PostureConsiderationLevel",
+            "101",
+        )
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("PostureConsiderationLevel") && e.contains("[0, 100]"),
+        "{e}"
+    );
+    assert_eq!(
+        value(&mut s, "LocalPathPlanning", "PostureConsiderationLevel").0,
+        100.0
+    );
+}
+
+#[test]
+fn an_on_activation_parameter_waits_for_the_next_activation() {
+    let mut s = loaded("open_field");
+    s.activate_all();
+    s.advance(50.0);
+    s.set_param(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
+        .unwrap();
+    assert_eq!(
+        value(&mut s, "MotorControl", "lengthOfAxle"),
+        (0.5, 0.441, true)
+    );
+    s.deactivate(ComponentKind::MotorControl).unwrap();
+    s.activate(ComponentKind::MotorControl).unwrap();
+    assert_eq!(
+        value(&mut s, "MotorControl", "lengthOfAxle"),
+        (0.5, 0.5, false)
+    );
+}
+
+#[test]
+fn a_nan_pose_puts_localization_in_error_and_reset_recovers() {
+    let mut s = loaded("open_field");
+    s.activate_all();
+    s.advance(100.0);
+    s.inject_input(
+        ComponentKind::Localization,
+        "InSimulatedPosition",
+        vec![f64::NAN, 0.0, 0.0, 0.0],
+    )
+    .unwrap();
+    s.step_ticks(1);
+    let info = s.system().component_info(ComponentKind::Localization);
+    assert_eq!(info.state, LifecycleState::Error);
+    assert_eq!(
+        info.last_error.as_deref(),
+        Some("InSimulatedPosition: data[0] = NaN is not finite")
+    );
+    let unknown = s
+        .inject_input(ComponentKind::MotorControl, "Torque", vec![0.0])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        unknown.starts_with("MotorControl has no input port `Torque`"),
+        "{unknown}"
+    );
+    assert_eq!(
+        s.reset(ComponentKind::Localization).unwrap(),
+        LifecycleState::Inactive
+    );
+    assert_eq!(
+        s.activate(ComponentKind::Localization).unwrap(),
+        LifecycleState::Active
+    );
+    s.advance(100.0);
+    assert_eq!(
+        s.system().component_state(ComponentKind::Localization),
+        LifecycleState::Active
+    );
+}
+
+#[test]
+fn the_plot_window_holds_the_last_seconds_and_the_replans() {
+    let mut s = loaded("open_field");
+    s.activate_all();
+    s.set_speed(16.0).unwrap();
+    for _ in 0..50 {
+        s.advance(16.0);
+    }
+    let w = s.plot(60.0);
+    let n = w.t.len();
+    assert!(n > 100, "{n} samples");
+    for series in [&w.rate_l, &w.torque_r, &w.v, &w.w_cmd] {
+        assert_eq!(series.len(), n);
+    }
+    assert_eq!(w.deviation.len(), n);
+    assert_eq!(w.deviatinglen, 0.1);
+    let now = s.system().time();
+    assert!(w.t[0] >= now - 60.0 - 1e-9 && w.t[n - 1] <= now);
+    assert!(w.t.windows(2).all(|p| p[0] < p[1]));
+    assert!(!w.replans.is_empty(), "the first plans are in the window");
+    assert!(
+        w.replans
+            .iter()
+            .all(|&t| t >= now - 60.0 - 1e-9 && t <= now)
+    );
+    let plans = s
+        .drain_events()
+        .iter()
+        .filter(|e| {
+            matches!(
+                e.kind,
+                EventKind::GlobalPlan { .. } | EventKind::LocalPlanSent { cells: 1.., .. }
+            )
+        })
+        .count();
+    assert!(plans >= w.replans.len());
+}
