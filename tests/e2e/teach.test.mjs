@@ -268,14 +268,14 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   await page.click('#layers summary');
   await page.uncheck('#layer-caption');
   await page.click('#layers summary');
+  await page.click('#share-copy');
+  await page.waitForSelector('#share-link:not([hidden])', WAIT);
+  const link = await page.inputValue('#share-link');
+  // The frame of the page that made the link (the robot has not started).
   await frames(page, 3);
   const frame = await canvasHash(page);
   const list = await params(page);
   const planned = await plan(page);
-
-  await page.click('#share-copy');
-  await page.waitForSelector('#share-link:not([hidden])', WAIT);
-  const link = await page.inputValue('#share-link');
   const token = await page.evaluate(() => window.rtnav.demo.share_token());
   assert.equal(link, `${new URL(page.url()).origin}${new URL(page.url()).pathname}?share=${token}`);
   assert.match(token, /^[A-Za-z0-9_-]+$/, 'URL-safe');
@@ -347,7 +347,7 @@ test('an exported .conf imported again restores the configuration; refused value
   assert.deepEqual(await params(page), list);
 
   // A broken .conf: refused with the line, nothing changed.
-  await page.setInputFiles('#conf-import', { name: 'broken.conf', mimeType: 'text/plain', buffer: Buffer.from('conf.default.PostureConsiderationLevel: lots\n') });
+  await page.setInputFiles('#conf-import', { name: 'broken.conf', mimeType: 'text/plain', buffer: Buffer.from('this line is not a configuration\n') });
   await page.waitForSelector('#conf-message[data-level="error"]:not([hidden])', WAIT);
   assert.match(await page.textContent('#conf-message'), /^broken\.conf not imported \(nothing changed\): /);
   assert.deepEqual(await params(page), list);
@@ -358,7 +358,8 @@ test('an exported .conf imported again restores the configuration; refused value
   list = await params(page);
   assert.deepEqual(list, original);
   assert.equal(await page.evaluate(() => window.rtnav.demo.conf_export()), text, 'export → import → export is identical');
-  await page.waitForSelector(`${row('DriveControl', 'MaxVelocity')}[data-value="0.5"]`, { state: 'attached', ...WAIT });
+  const velocity = param(original, 'DriveControl', 'MaxVelocity').value;
+  await page.waitForSelector(`${row('DriveControl', 'MaxVelocity')}[data-value="${velocity}"]`, { state: 'attached', ...WAIT });
   assert.deepEqual(problems, []);
   await page.close();
 });
