@@ -20,6 +20,9 @@ export function createShare(root, canvas, app) {
       app.notice.show(`No share link: ${r.error}`, 'error');
       return;
     }
+    // While the robot stands, making the link restarts the set-up from it (what the link
+    // opens with): the panels read the system again.
+    app.emit('changed');
     const url = `${location.origin}${location.pathname}?share=${r.value}`;
     link.value = url;
     link.hidden = false;
