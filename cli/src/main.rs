@@ -5,7 +5,12 @@
 //! ```text
 //! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
+//! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
 //! ```
+//!
+//! `inspect` prints what the map and the potential field say about one cell, as one line of
+//! JSON (`rtnav::system::CellInspection`), for the scenario loaded as the browser page loads
+//! it: without its timed events, previewed with the full field.
 //!
 //! Scenario files name their maps relative to the project's root; the root is found by
 //! walking up from the scenario file to the first folder where the map exists (or given
@@ -18,7 +23,9 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use rtnav::render::Renderer;
-use rtnav::system::{DirResolver, FileResolver, OutcomeKind, Scenario, ScenarioRun, System};
+use rtnav::system::{
+    DirResolver, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, System,
+};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -71,6 +78,18 @@ enum Command {
         #[arg(long, default_value = "1200x800", value_parser = parse_size)]
         size: (u32, u32),
     },
+    /// Print one map cell's obstacle distance and potential field as JSON, after the
+    /// planning preview the browser page makes on loading the scenario.
+    Inspect {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// The cell, X,Y (column, row; 0,0 is the lower-left cell).
+        #[arg(long, value_parser = parse_cell, allow_hyphen_values = true)]
+        cell: (i64, i64),
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+    },
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -79,6 +98,14 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
         .ok_or_else(|| format!("`{s}`: expected WIDTHxHEIGHT, e.g. 1200x800"))?;
     let n = |t: &str| t.trim().parse::<u32>().map_err(|e| format!("`{s}`: {e}"));
     Ok((n(w)?, n(h)?))
+}
+
+fn parse_cell(s: &str) -> Result<(i64, i64), String> {
+    let (x, y) = s
+        .split_once(',')
+        .ok_or_else(|| format!("`{s}`: expected X,Y, e.g. 30,40"))?;
+    let n = |t: &str| t.trim().parse::<i64>().map_err(|e| format!("`{s}`: {e}"));
+    Ok((n(x)?, n(y)?))
 }
 
 fn main() -> ExitCode {
@@ -107,6 +134,11 @@ fn main() -> ExitCode {
             root,
             size,
         } => render(&scenario, &png, root, size),
+        Command::Inspect {
+            scenario,
+            cell,
+            root,
+        } => inspect(&scenario, cell, root),
     };
     match result {
         Ok(code) => code,
@@ -273,5 +305,28 @@ fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> C
         if planned { "planned" } else { "no plan" },
         png.display()
     );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The system of a scenario as the browser page loads it ([`Session::load_scenario`]:
+/// without the scenario's timed events, the full potential field, the planning preview).
+fn page_session(path: &Path, root: Option<PathBuf>) -> CliResult<Session> {
+    let (scenario, resolver) = load(path, root)?;
+    let name = scenario.name.clone();
+    let mut session = Session::new().map_err(|e| e.to_string())?;
+    session
+        .load_scenario(scenario, &resolver)
+        .map_err(|e| format!("scenario `{name}`: {e}"))?;
+    Ok(session)
+}
+
+fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<ExitCode> {
+    let session = page_session(path, root)?;
+    let cell = session
+        .system()
+        .inspect_cell(x, y)
+        .map_err(|e| e.to_string())?;
+    let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
+    println!("{json}");
     Ok(ExitCode::SUCCESS)
 }

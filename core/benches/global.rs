@@ -175,7 +175,7 @@ fn full_mode(cases: &mut [Case]) {
                 case.name
             );
         }
-        let secs = |d: Duration| format!("{:.3} s", d.as_secs_f64());
+        let secs = |d: Duration| format!("{:.1} ms", d.as_secs_f64() * 1e3);
         println!(
             "| {} | {} | {} | {} | {:.2} |",
             case.name,

@@ -739,4 +739,82 @@ pub enum SystemError {
     /// A telemetry history of capacity zero.
     #[error("telemetry capacity must be at least 1")]
     ZeroCapacity,
+
+    // --- teaching tools (branch `teachcore`): the configuration bundle, the inspector ---
+    /// A line of a configuration bundle (`System::load_conf`) before the first component
+    /// marker that is neither a comment nor blank.
+    #[error(
+        "configuration file line {line}: `{text}` is not inside a component's block \
+         (a block starts with a marker line `# [InstanceName]`)"
+    )]
+    ConfOutsideBlock {
+        /// 1-based line in the whole file.
+        line: usize,
+        /// The line as written.
+        text: String,
+    },
+    /// A block marker `# [NAME]` that names no component with configuration parameters.
+    #[error(
+        "configuration file line {line}: marker `# [{name}]` names no component with \
+         configuration parameters (expected one of {expected})"
+    )]
+    ConfUnknownComponent {
+        /// 1-based line of the marker in the whole file.
+        line: usize,
+        /// The name in the marker.
+        name: String,
+        /// The instance names known.
+        expected: String,
+    },
+    /// A second block for the same component.
+    #[error(
+        "configuration file line {line}: a second block for `{component}` (its first block \
+         starts at line {first})"
+    )]
+    ConfDuplicateComponent {
+        /// 1-based line of the second marker.
+        line: usize,
+        /// The component's instance name.
+        component: String,
+        /// 1-based line of the first marker.
+        first: usize,
+    },
+    /// A component's block that cannot be read or applied (unknown key, bad value, value
+    /// out of range, unknown configuration set).
+    #[error("configuration file line {line}, component `{component}`: {}", conf_problem(.problem))]
+    ConfBlock {
+        /// The component's instance name.
+        component: String,
+        /// 1-based line in the whole file.
+        line: usize,
+        /// The problem, as the component's configuration reports it.
+        problem: ConfigError,
+    },
+    /// A cell that is not in the map.
+    #[error("cell ({x}, {y}) is outside the map ({width} × {height} cells)")]
+    CellOutsideMap {
+        /// Column asked for.
+        x: i64,
+        /// Row asked for.
+        y: i64,
+        /// Cells in x.
+        width: usize,
+        /// Cells in y.
+        height: usize,
+    },
+}
+
+/// A `.conf` problem without its line (the bundle's error names the line of the whole file).
+fn conf_problem(e: &ConfigError) -> String {
+    let mut e = e.clone();
+    match &mut e {
+        ConfigError::UnknownParameter { line, .. }
+        | ConfigError::OutOfRange { line, .. }
+        | ConfigError::BadValue { line, .. } => *line = None,
+        ConfigError::Syntax { text, reason, .. } => {
+            return format!("cannot read `{text}`: {reason}");
+        }
+        _ => {}
+    }
+    e.to_string()
 }

@@ -27,7 +27,7 @@ fn scenario(name: &str) -> (Scenario, MemoryResolver) {
 fn loaded(name: &str) -> Session {
     let (s, files) = scenario(name);
     let mut session = Session::new().unwrap();
-    session.load_scenario(s, files).unwrap();
+    session.load_scenario(s, &files).unwrap();
     session
 }
 
@@ -261,4 +261,28 @@ fn the_plot_window_holds_the_last_seconds_and_the_replans() {
         })
         .count();
     assert!(plans >= w.replans.len());
+}
+
+#[test]
+fn an_exported_conf_reimported_gives_the_same_configuration() {
+    let mut s = loaded("open_field");
+    let original = s.parameters_view();
+    let text = s.system().to_conf();
+    s.set_param(ComponentKind::DriveControl, "MaxVelocity", "0.3")
+        .unwrap();
+    s.set_param(ComponentKind::PhysicsSim, "Mass", "35")
+        .unwrap();
+    assert_ne!(s.parameters_view(), original);
+    s.load_conf(&text).unwrap();
+    assert_eq!(s.parameters_view(), original);
+    assert_eq!(s.system().to_conf(), text);
+    // A bad file is refused with its line; nothing changes.
+    let bad = text.replace(
+        "conf.default.MaxVelocity: 0.5",
+        "conf.default.MaxVelocity: 9",
+    );
+    assert_ne!(bad, text, "the export names MaxVelocity as written");
+    let e = s.load_conf(&bad).unwrap_err().to_string();
+    assert!(e.contains("MaxVelocity") && e.contains("line"), "{e}");
+    assert_eq!(s.parameters_view(), original);
 }

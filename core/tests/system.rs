@@ -158,10 +158,10 @@ fn bad_start_goal_and_map_input_is_refused_and_changes_nothing() {
         ComponentKind::from_name("DriveControl0").unwrap(),
         ComponentKind::DriveControl
     );
-    let e = s.config_mut(ComponentKind::PhysicsSim).err().unwrap();
+    let e = s.config_mut(ComponentKind::MapBuilder).err().unwrap();
     assert_eq!(
         e.to_string(),
-        "component `PhysicsSim` has no configuration parameters"
+        "component `MapBuilder` has no configuration parameters"
     );
     let cfg = s.config_mut(ComponentKind::LocalPathPlanning).unwrap();
     assert!(cfg.set("PostureConsiderationLevel", 120.0).is_err());

@@ -68,7 +68,7 @@ impl Inner {
         let scenario = Scenario::from_json(json).map_err(msg)?;
         let name = scenario.name.clone();
         self.session
-            .load_scenario(scenario, files.resolver())
+            .load_scenario(scenario, &files.resolver())
             .map_err(|e| format!("scenario `{name}`: {e}"))?;
         self.replaced();
         Ok(())

@@ -32,6 +32,31 @@ impl Demo {
         self.0.changed(r).map_err(js)
     }
 
+    /// The whole configuration (every component that has parameters) as one OpenRTM
+    /// `.conf` text: a block per component after its marker line `# [InstanceName]`.
+    pub fn conf_export(&self) -> String {
+        self.0.system().to_conf()
+    }
+
+    /// Replaces the configuration from a `.conf` text as [`Demo::conf_export`] writes it;
+    /// all-or-nothing, refused with the line and the problem.
+    pub fn conf_import(&mut self, text: &str) -> Result<(), JsError> {
+        let r = self.0.session.load_conf(text);
+        self.0.changed(r).map_err(js)
+    }
+
+    /// The cell `(x, y)` explained as JSON `{x, y, occupancy, obstacle_distance, impassable,
+    /// field: null | {potential, repulsion, attraction, posture, state, unreached}}` — the
+    /// same numbers `rtnav inspect` prints natively. A cell outside the map is an error.
+    pub fn inspect_cell(&self, x: i32, y: i32) -> Result<String, JsError> {
+        let cell = self
+            .0
+            .system()
+            .inspect_cell(i64::from(x), i64::from(y))
+            .map_err(|e| js(msg(e)))?;
+        json(&cell)
+    }
+
     /// The last `seconds` (≤ 60) of telemetry as JSON arrays `{t, target_rate_l, …,
     /// deviation, deviatinglen, replans}`.
     pub fn plot_json(&self, seconds: f64) -> Result<String, JsError> {

@@ -134,20 +134,6 @@ fn wasm_tests() -> Result {
         ))
 }
 
-/// Cargo's target directory: `$CARGO_TARGET_DIR`, else `target/` in the repository.
-fn target_dir() -> PathBuf {
-    std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .map(|d| {
-            if d.is_absolute() {
-                d
-            } else {
-                tools::repo_root().join(d)
-            }
-        })
-        .unwrap_or_else(|| tools::repo_root().join("target"))
-}
-
 fn e2e_dir() -> PathBuf {
     tools::repo_root().join("tests").join("e2e")
 }
@@ -162,10 +148,11 @@ fn e2e() -> Result {
         .current_dir(e2e_dir())
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))?;
     wasm::build(wasm::Profile::Release)?;
-    // The native `rtnav` binary, for the tests that compare the page with the native core
-    // (`RTNAV_CLI`).
-    run(cargo().args(["build", "-p", "rtnav-cli"]))?;
-    let cli = target_dir()
+    // The native runner, for tests that compare the page's numbers with the core's.
+    run(cargo().args(["build", "-q", "-p", "rtnav-cli"]))?;
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map_or_else(|| tools::repo_root().join("target"), PathBuf::from);
+    let cli = target
         .join("debug")
         .join(format!("rtnav{}", std::env::consts::EXE_SUFFIX));
     let server = Background::start()?;

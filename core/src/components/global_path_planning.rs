@@ -193,6 +193,11 @@ impl GlobalPathPlanning {
         self.config.params()
     }
 
+    /// The configuration, to read (requested and effective values, sets).
+    pub fn config(&self) -> &Configuration<GlobalPathPlanningParams> {
+        &self.config
+    }
+
     /// The configuration (to set `dmin`).
     pub fn config_mut(&mut self) -> &mut Configuration<GlobalPathPlanningParams> {
         &mut self.config

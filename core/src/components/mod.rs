@@ -11,7 +11,7 @@ pub use localization::{Localization, LocalizationMode, LocalizationParams};
 pub use motor_control::{
     INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
 };
-pub use physics_sim::PhysicsSim;
+pub use physics_sim::{PhysicsSim, PhysicsSimParams};
 
 // --- LocalPathPlanning (branch `local`) ---
 pub mod local_path_planning;

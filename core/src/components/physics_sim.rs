@@ -11,19 +11,75 @@
 //! Each tick it applies the newest torque (held between messages, as a simulator does) for
 //! `period / 1 ms` fixed steps, then publishes the state stamped with the time reached.
 //! Run it at 1 kHz (one step per tick).
+//!
+//! Its configuration ([`PhysicsSimParams`]) is the model's dynamics — `Mass`, `YawInertia`,
+//! `ViscousFriction`, `MaxTorque` — so a lesson can make the robot heavier or its motors
+//! weaker while it drives. All are `always`: a changed value is used from the next tick on
+//! (the mass matrix and the step matrix are recomputed then; the state carries over).
 
+use crate::define_parameters;
 use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::map::GridMap;
-use crate::motion::{BumpReport, Physics, PhysicsParams, STEP_NS};
-use crate::rtc::{
-    Component, ComponentError, InPort, OutPort, ReturnCode, Tick, Time, TimedDoubleSeq,
+use crate::motion::{
+    BumpReport, DEFAULT_MASS, DEFAULT_MAX_TORQUE, DEFAULT_VISCOUS_FRICTION, DEFAULT_YAW_INERTIA,
+    Physics, PhysicsParams, STEP_NS,
 };
+use crate::rtc::{
+    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
+    Time, TimedDoubleSeq,
+};
+
+define_parameters! {
+    /// PhysicsSim's configuration parameters: the dynamics of the robot model of SPEC §5
+    /// "Physics" (`M·ω̇ = τ − b·ω`, torques saturated). All `always`: used from the next tick
+    /// on. The defaults are [`PhysicsParams`]' defaults, the model the system is built with.
+    pub struct PhysicsSimParams {
+        /// Mass `m` \[kg\] (SPEC §5 "Physics"; [`PhysicsParams::mass`]).
+        mass: f64 = ("Mass", "kg", DEFAULT_MASS, 0.1, 1000.0, Always,
+            "mass m of the robot (SPEC §5 Physics): its share of the wheel-space mass matrix"),
+        /// Yaw moment of inertia `I` about the axle centre \[kg·m²\] (SPEC §5 "Physics";
+        /// [`PhysicsParams::yaw_inertia`]).
+        yaw_inertia: f64 = ("YawInertia", "kg·m²", DEFAULT_YAW_INERTIA, 0.001, 1000.0, Always,
+            "yaw moment of inertia I about the axle centre (SPEC §5 Physics): resists turning"),
+        /// Viscous friction `b` at each wheel \[N·m·s/rad\] (SPEC §5 "Physics";
+        /// [`PhysicsParams::viscous_friction`]).
+        viscous_friction: f64 = ("ViscousFriction", "N·m·s/rad", DEFAULT_VISCOUS_FRICTION,
+            0.0, 10.0, Always,
+            "viscous friction b at each wheel (SPEC §5 Physics): torque b·ω against the wheel's rate"),
+        /// Torque saturation of each wheel's motor \[N·m\] (SPEC §5 "Physics";
+        /// [`PhysicsParams::max_torque`]).
+        max_torque: f64 = ("MaxTorque", "N·m", DEFAULT_MAX_TORQUE, 0.01, 100.0, Always,
+            "largest torque of each wheel's motor (SPEC §5 Physics): commands above it saturate"),
+    }
+}
+
+impl PhysicsSimParams {
+    /// These values in place of the dynamics of `base` (the rest of the model kept).
+    pub fn apply_to(&self, base: &PhysicsParams) -> PhysicsParams {
+        PhysicsParams {
+            mass: self.mass,
+            yaw_inertia: self.yaw_inertia,
+            viscous_friction: self.viscous_friction,
+            max_torque: self.max_torque,
+            ..base.clone()
+        }
+    }
+
+    /// Whether `params` has exactly these dynamics.
+    fn matches(&self, params: &PhysicsParams) -> bool {
+        self.mass == params.mass
+            && self.yaw_inertia == params.yaw_inertia
+            && self.viscous_friction == params.viscous_friction
+            && self.max_torque == params.max_torque
+    }
+}
 
 /// The physics RT-component.
 #[derive(Debug)]
 pub struct PhysicsSim {
     name: String,
+    config: Configuration<PhysicsSimParams>,
     physics: Physics,
     /// `torque` (in): wheel torques `[left, right]` \[N·m\].
     pub torque: InPort<TimedDoubleSeq>,
@@ -40,11 +96,31 @@ pub struct PhysicsSim {
 }
 
 impl PhysicsSim {
-    /// A physics component named `name` with the model `params` (validated).
+    /// A physics component named `name` with the model `params` (validated). Its
+    /// configuration starts at the dynamics of `params`; a value outside the configuration's
+    /// range (e.g. a mass above 1000 kg) is refused.
     pub fn new(name: &str, params: PhysicsParams) -> Result<Self, MotionError> {
+        let physics = Physics::new(params)?;
+        let mut config = Configuration::<PhysicsSimParams>::new();
+        let p = physics.params();
+        for (key, value) in [
+            ("Mass", p.mass),
+            ("YawInertia", p.yaw_inertia),
+            ("ViscousFriction", p.viscous_friction),
+            ("MaxTorque", p.max_torque),
+        ] {
+            config
+                .set(key, value)
+                .map_err(|_| MotionError::BadParameter {
+                    name: key.to_owned(),
+                    value,
+                    reason: "is outside PhysicsSim's configuration range",
+                })?;
+        }
         Ok(Self {
             name: name.to_owned(),
-            physics: Physics::new(params)?,
+            config,
+            physics,
             torque: InPort::new("torque"),
             angle: OutPort::new("angle"),
             position: OutPort::new("position"),
@@ -59,6 +135,27 @@ impl PhysicsSim {
     /// The physics (state, parameters, map).
     pub fn physics(&self) -> &Physics {
         &self.physics
+    }
+
+    /// The configuration (the model's dynamics).
+    pub fn config(&self) -> &Configuration<PhysicsSimParams> {
+        &self.config
+    }
+
+    /// The configuration, to change parameters (used from the next tick on).
+    pub fn config_mut(&mut self) -> &mut Configuration<PhysicsSimParams> {
+        &mut self.config
+    }
+
+    /// Brings the physics' model in line with the configuration (a changed value recomputes
+    /// the mass matrix; nothing is done while they agree, so the defaults change no bit).
+    fn apply_config(&mut self) -> Result<(), MotionError> {
+        let c = *self.config.params();
+        if c.matches(self.physics.params()) {
+            return Ok(());
+        }
+        let next = c.apply_to(self.physics.params());
+        self.physics.set_params(next)
     }
 
     /// Places the robot at `pose` (the start pose), at rest.
@@ -170,6 +267,10 @@ impl Component for PhysicsSim {
         &self.name
     }
 
+    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
+        Some(&mut self.config)
+    }
+
     /// Checks the period and starts the simulated clock at the activation time.
     fn on_activated(&mut self, tick: &Tick) -> ReturnCode {
         Self::steps(tick).map_err(|e| ComponentError::from(crate::Error::from(e)))?;
@@ -188,6 +289,8 @@ impl Component for PhysicsSim {
 
     fn on_execute(&mut self, tick: &Tick) -> ReturnCode {
         let n = Self::steps(tick).map_err(|e| ComponentError::from(crate::Error::from(e)))?;
+        self.apply_config()
+            .map_err(|e| ComponentError::from(crate::Error::from(e)))?;
         if self.physics.state().time_ns != tick.time_ns {
             // Inactive for a while, or ticks skipped: the world waited.
             self.physics.set_time_ns(tick.time_ns);

@@ -115,8 +115,8 @@ impl<K: RadixKey> Default for Scratch<K> {
     }
 }
 
-/// Bits of a cell's byte (bit 7, `PASSABLE`, is read as `byte >> 7` in the search): passable, the search generation (1..=7; 0 = never reached), the
-/// cell was expanded, and the move that reached it.
+/// Bits of a cell's byte: passable (bit 7, read as `byte >> 7` in the search), the search
+/// generation (1..=7; 0 = never reached), the cell was expanded, and the move that reached it.
 const PASSABLE: u8 = 0b1000_0000;
 const GENERATION_SHIFT: u32 = 4;
 const GENERATION_MASK: u8 = 0b0111_0000;
@@ -359,8 +359,7 @@ impl Search<'_> {
         let straight = K::of(OctileCost::STRAIGHT);
         let diagonal = K::of(OctileCost::DIAGONAL);
         let (gx, gy) = (self.goal.0 as u32, self.goal.1 as u32);
-        // h of a cell.
-        // h = (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
+        // h of a cell: (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
         // min·(key(√2) − key(1)) (keys are linear and exact).
         let (unit, extra) = (straight, diagonal - straight);
         let heuristic = |x: u32, y: u32| {
@@ -369,8 +368,8 @@ impl Search<'_> {
         };
         cells[s] = tag;
         g[s] = K::default();
-        open.push(heuristic(start.0 as u32, start.1 as u32), s as u32)
-            .ok()?;
+        let h = heuristic(start.0 as u32, start.1 as u32);
+        open.push(h, s as u32).ok()?;
         let mut expanded = 0usize;
         while let Some((f, node)) = open.pop() {
             let p = node as usize;
@@ -408,7 +407,8 @@ impl Search<'_> {
                     diagonal
                 };
                 let ng = gp + step;
-                if c & GENERATION_MASK == tag & GENERATION_MASK && (c & CLOSED != 0 || ng >= g[m]) {
+                let reached = c & GENERATION_MASK == tag & GENERATION_MASK;
+                if reached && (c & CLOSED != 0 || ng >= g[m]) {
                     continue;
                 }
                 cells[m] = tag | k as u8;

@@ -99,6 +99,15 @@ impl<K: RadixKey> RadixHeap<K> {
             };
             self.nonempty[(i - 1) / 64] &= !(1 << ((i - 1) % 64));
             let mut moving = core::mem::take(&mut self.buckets[i]);
+            if moving.len() == 1 {
+                // A single entry is the minimum: take it without a detour through bucket 0.
+                let top = moving.pop();
+                if let Some((key, _)) = top {
+                    self.last = key;
+                }
+                self.buckets[i] = moving;
+                return top;
+            }
             // `moving` is non-empty: its bit was set.
             self.last = moving.iter().map(|e| e.0).min().unwrap_or(self.last);
             for &(key, cell) in &moving {

@@ -21,7 +21,7 @@ fn on_segment(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> bool {
     let (vx, vy) = (c.0 - b.0, c.1 - b.1);
     let cross = ux * vy - uy * vx;
     let dot = ux * vx + uy * vy;
-    let scale = libm::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+    let scale = f64::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
     cross.abs() <= 1e-9 * scale && dot >= 0.0
 }
 

@@ -44,7 +44,7 @@ pub fn wrap_angle(a: f64) -> f64 {
 pub fn step_length(a: Cell, b: Cell, grid_size: f64) -> f64 {
     let dx = a.0.abs_diff(b.0) as f64;
     let dy = a.1.abs_diff(b.1) as f64;
-    libm::sqrt(dx * dx + dy * dy) * grid_size
+    f64::sqrt(dx * dx + dy * dy) * grid_size
 }
 
 /// The index of the held-path cell nearest `position` (cell centre, straight distance),

@@ -258,7 +258,7 @@ impl PotentialField {
         let dist = map.distances();
         let dmin = req.dmin;
         let step_straight = g;
-        let step_diagonal = libm::sqrt(2.0) * g;
+        let step_diagonal = f64::sqrt(2.0) * g;
         let attraction_factor = (100.0 - req.posture_consideration_level) / 100.0;
         let posture_factor = req.posture_consideration_level / 100.0;
         let posture_on = req.posture && posture_factor > 0.0;
@@ -483,7 +483,7 @@ fn posture_terms(
     }
     // G_Distance = SL / GL, S_Distance = (GL / SL) · L: only the ratio of the straight
     // distances is needed, so cells serve as the unit.
-    let sl_over_gl = libm::sqrt(sl2 / gl2);
+    let sl_over_gl = f64::sqrt(sl2 / gl2);
     let s_angle = libm::atan2((vx * hs.1 - vy * hs.0).abs(), vx * hs.0 + vy * hs.1);
     let g_angle = libm::atan2((wx * ht.1 - wy * ht.0).abs(), wx * ht.0 + wy * ht.1);
     g_angle * sl_over_gl + s_angle * l / sl_over_gl

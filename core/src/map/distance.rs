@@ -14,7 +14,7 @@
 //!    for rows whose distances are small, a bounded sideways scan ([`row_scan`]) that is
 //!    cheaper there. Both are exact, so the choice only changes the time.
 //!
-//! Metres are `√d² · GridSize` (`libm::sqrt`), through a table for small `d²`.
+//! Metres are `√d² · GridSize` (`f64::sqrt`, correctly rounded on every target), through a table for small `d²`.
 //!
 //! Everything outside the map is obstacle (SPEC §2), so the transform sees a virtual ring of
 //! obstacle cells around the map: in the column phase the rows `y = −1` and `y = height`, in
@@ -24,19 +24,32 @@
 //! The row phase of a row depends only on that row of `g`, and `g` of a column only on that
 //! column's cells. That is what makes the exact *incremental* update after `MapUpdate` simple
 //! ([`DistanceField::update_cells`]): recompute `g` for the changed columns, then the row phase
-//! for exactly the rows where some `g` changed.
+//! for exactly the rows where some `g` changed. (`g` is kept from the first `MapUpdate` on; a
+//! new map streams it through its distance array instead, see [`DistanceField::new`].)
 
 /// The obstacle distances of a map, and what is needed to keep them current.
 ///
-/// Invariants: `column.len() == distance.len() == width · height`; `column` is the column
-/// phase of the current cells and `distance` the full transform in metres.
-#[derive(Debug, Clone, PartialEq)]
+/// Invariants: `distance` is the full transform of the current cells in metres; `column`,
+/// when present, is their column phase (`width · height` entries). It is kept only once a
+/// `MapUpdate` has needed it, so a map that is never updated carries no column array, and
+/// building one allocates only the distances.
+#[derive(Debug, Clone)]
 pub(crate) struct DistanceField {
     /// Phase 1: cells from each cell to the nearest obstacle in its column (virtual rows
     /// `−1` and `height` included), x fastest.
-    column: Vec<u32>,
+    column: Option<Vec<u32>>,
     /// Obstacle distance in metres, x fastest.
     distance: Vec<f64>,
+    /// `d²` → metres for this map's grid size (kept: a `MapUpdate` reuses it).
+    metres: Metres,
+}
+
+/// Equal when the distances are equal: the column phase is derived data (and kept or not
+/// depending on the map's history), the metre table follows from the grid size.
+impl PartialEq for DistanceField {
+    fn eq(&self, other: &Self) -> bool {
+        self.distance == other.distance
+    }
 }
 
 /// One parabola of the lower envelope: it is the lowest from position `start` on; its apex
@@ -184,21 +197,24 @@ const METRE_TABLE_LEN: usize = 4096;
 
 /// `√d² · grid_size`: the one formula for metres (SPEC §6: `sqrt` through `libm`).
 fn to_metres(d2: u64, grid_size: f64) -> f64 {
-    libm::sqrt(d2 as f64) * grid_size
+    f64::sqrt(d2 as f64) * grid_size
 }
 
-/// Metres of a row phase, with the lookup table for small `d²`.
+/// `√d² · grid_size`, with a lookup table for the small `d²` a map can have.
+#[derive(Debug, Clone, PartialEq)]
 struct Metres {
     table: Vec<f64>,
     grid_size: f64,
 }
 
 impl Metres {
-    fn new(grid_size: f64) -> Self {
+    /// The table for a `width × height` map: no distance exceeds half its smaller side plus
+    /// one (the virtual ring), so small maps get small tables.
+    fn new(width: usize, height: usize, grid_size: f64) -> Self {
+        let r = (width.min(height) as u64 + 2) / 2;
+        let len = (r * r * 2 + 1).min(METRE_TABLE_LEN as u64);
         Self {
-            table: (0..METRE_TABLE_LEN as u64)
-                .map(|d2| to_metres(d2, grid_size))
-                .collect(),
+            table: (0..len).map(|d2| to_metres(d2, grid_size)).collect(),
             grid_size,
         }
     }
@@ -263,27 +279,56 @@ fn column_phase_one(cells: &[u8], width: usize, x: usize, out: &mut [u32]) {
 impl DistanceField {
     /// The transform of `cells` (x fastest, 1 = obstacle; `width, height ≥ 1`), in metres
     /// with `grid_size`.
+    ///
+    /// Streams the column phase through the distance array itself: the down sweep is stored
+    /// in `distance` (whole numbers, exact in `f64`), then the rows are finished bottom-up —
+    /// the up sweep needs only the row below, and a row's metres overwrite its own down-sweep
+    /// values once they are read. So the only large allocation is the result.
     pub(crate) fn new(cells: &[u8], width: usize, height: usize, grid_size: f64) -> Self {
         debug_assert_eq!(cells.len(), width * height);
-        let mut field = Self {
-            column: vec![0; cells.len()],
-            distance: vec![0.0; cells.len()],
-        };
-        field.recompute(cells, width, height, grid_size);
-        field
+        let metres = Metres::new(width, height, grid_size);
+        let mut distance = vec![0.0; cells.len()];
+        // Down sweep: distance to the nearest obstacle at or above (virtual row −1).
+        for (d, &c) in distance[..width].iter_mut().zip(&cells[..width]) {
+            *d = f64::from(u8::from(c == 0));
+        }
+        for y in 1..height {
+            let (done, rest) = distance.split_at_mut(y * width);
+            let prev = &done[(y - 1) * width..];
+            let crow = &cells[y * width..(y + 1) * width];
+            for ((d, &p), &c) in rest[..width].iter_mut().zip(prev).zip(crow) {
+                *d = if c == 0 { p + 1.0 } else { 0.0 };
+            }
+        }
+        // Up sweep (virtual row `height` is obstacle) and row phase, bottom-up.
+        let mut below = vec![0u32; width];
+        let mut row = vec![0u32; width];
+        let mut scratch = RowScratch::new(width);
+        for out in distance.chunks_exact_mut(width).rev() {
+            for ((g, &down), &b) in row.iter_mut().zip(out.iter()).zip(&below) {
+                *g = (down as u32).min(b + 1);
+            }
+            transform_row(&mut scratch, &metres, &row, out);
+            core::mem::swap(&mut row, &mut below);
+        }
+        Self {
+            column: None,
+            distance,
+            metres,
+        }
     }
 
-    /// The whole transform again, in place (no allocation beyond the row scratch).
-    fn recompute(&mut self, cells: &[u8], width: usize, height: usize, grid_size: f64) {
-        column_phase(cells, width, height, &mut self.column);
+    /// The whole transform again, in place, keeping the column phase for later updates.
+    fn recompute(&mut self, cells: &[u8], width: usize, height: usize) {
+        let column = self.column.get_or_insert_with(Vec::new);
+        column.resize(cells.len(), 0);
+        column_phase(cells, width, height, column);
         let mut scratch = RowScratch::new(width);
-        let metres = Metres::new(grid_size);
-        for (g, out) in self
-            .column
+        for (g, out) in column
             .chunks_exact(width)
             .zip(self.distance.chunks_exact_mut(width))
         {
-            transform_row(&mut scratch, &metres, g, out);
+            transform_row(&mut scratch, &self.metres, g, out);
         }
     }
 
@@ -300,23 +345,26 @@ impl DistanceField {
         cells: &[u8],
         width: usize,
         height: usize,
-        grid_size: f64,
         changed: &[usize],
     ) {
         let mut columns: Vec<usize> = changed.iter().map(|&i| i % width).collect();
         columns.sort_unstable();
         columns.dedup();
-        // Many columns: the row-major full recompute is cheaper than strided columns.
-        if columns.len() * 8 > width {
-            self.recompute(cells, width, height, grid_size);
-            return;
-        }
+        // Many columns (the row-major full recompute is cheaper than strided columns), or no
+        // column phase kept yet (the first update: it is made now and kept).
+        let column = match &mut self.column {
+            Some(column) if columns.len() * 8 <= width => column,
+            _ => {
+                self.recompute(cells, width, height);
+                return;
+            }
+        };
         let mut dirty = vec![false; height];
         let mut col = vec![0u32; height];
         for &x in &columns {
             column_phase_one(cells, width, x, &mut col);
             for (y, &g) in col.iter().enumerate() {
-                let old = &mut self.column[x + y * width];
+                let old = &mut column[x + y * width];
                 if *old != g {
                     *old = g;
                     dirty[y] = true;
@@ -324,11 +372,10 @@ impl DistanceField {
             }
         }
         let mut scratch = RowScratch::new(width);
-        let metres = Metres::new(grid_size);
         for y in (0..height).filter(|&y| dirty[y]) {
             let r = y * width..(y + 1) * width;
             let out = &mut self.distance[r.clone()];
-            transform_row(&mut scratch, &metres, &self.column[r], out);
+            transform_row(&mut scratch, &self.metres, &column[r], out);
         }
     }
 }

@@ -181,9 +181,10 @@ impl GridMap {
         self.field.distances()
     }
 
-    /// Flat index of an in-map cell.
+    /// Flat index of an in-map cell, `x + y · width` (meaningless, but no panic, for a cell
+    /// outside the map).
     pub fn index(&self, (x, y): Cell) -> usize {
-        x + y * self.width
+        x.wrapping_add(y.wrapping_mul(self.width))
     }
 
     /// Whether `(x, y)` (possibly negative) lies inside the map.
@@ -301,13 +302,8 @@ impl GridMap {
             .collect();
         self.version = tm;
         if !changed.is_empty() {
-            self.field.update_cells(
-                &self.cells,
-                self.width,
-                self.height,
-                self.grid_size,
-                &changed,
-            );
+            self.field
+                .update_cells(&self.cells, self.width, self.height, &changed);
         }
         Ok(changed.len())
     }

@@ -17,7 +17,8 @@ pub use diff_drive::{DiffDrive, angle_diff, arc_step, wrap_angle};
 pub use model_frame::{ModelFrame, TRANSFORM_LEN};
 pub use odometry::Odometry;
 pub use physics::{
-    BumpReport, CONTACT_RELEASE, Physics, PhysicsParams, PhysicsState, STEP_NS, STEP_S,
+    BumpReport, CONTACT_RELEASE, DEFAULT_MASS, DEFAULT_MAX_TORQUE, DEFAULT_VISCOUS_FRICTION,
+    DEFAULT_YAW_INERTIA, Physics, PhysicsParams, PhysicsState, STEP_NS, STEP_S,
 };
 pub use pure_pursuit::{
     DrivePhase, Polyline, Projection, PurePursuit, PursuitCommand, PursuitParams,

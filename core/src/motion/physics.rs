@@ -38,11 +38,23 @@ pub const CONTACT_RELEASE: f64 = 0.01;
 fn default_robot_name() -> String {
     "rh0".to_owned()
 }
+/// The default mass \[kg\] ([`PhysicsParams::mass`]; PhysicsSim's `Mass`).
+pub const DEFAULT_MASS: f64 = 20.0;
+/// The default yaw inertia \[kg·m²\] ([`PhysicsParams::yaw_inertia`]; PhysicsSim's
+/// `YawInertia`).
+pub const DEFAULT_YAW_INERTIA: f64 = 1.0;
+/// The default viscous friction \[N·m·s/rad\] ([`PhysicsParams::viscous_friction`];
+/// PhysicsSim's `ViscousFriction`).
+pub const DEFAULT_VISCOUS_FRICTION: f64 = 0.02;
+/// The default torque saturation \[N·m\] ([`PhysicsParams::max_torque`]; PhysicsSim's
+/// `MaxTorque`).
+pub const DEFAULT_MAX_TORQUE: f64 = 5.0;
+
 fn default_mass() -> f64 {
-    20.0
+    DEFAULT_MASS
 }
 fn default_yaw_inertia() -> f64 {
-    1.0
+    DEFAULT_YAW_INERTIA
 }
 fn default_wheel_inertia() -> f64 {
     0.005
@@ -54,10 +66,10 @@ fn default_axle_length() -> f64 {
     0.441
 }
 fn default_viscous_friction() -> f64 {
-    0.02
+    DEFAULT_VISCOUS_FRICTION
 }
 fn default_max_torque() -> f64 {
-    5.0
+    DEFAULT_MAX_TORQUE
 }
 fn default_body_radius() -> f64 {
     0.45
@@ -287,6 +299,39 @@ struct Touch {
     contact: (f64, f64),
 }
 
+/// What the physics derives from its parameters (checked).
+struct Model {
+    drive: DiffDrive,
+    frame: ModelFrame,
+    mass: Matrix2<f64>,
+    step_matrix: Matrix2<f64>,
+}
+
+impl Model {
+    fn of(params: &PhysicsParams) -> Result<Self, MotionError> {
+        params.validate()?;
+        let drive = DiffDrive::new(params.wheel_radius, params.wheel_radius, params.axle_length)?;
+        let frame = ModelFrame::new(
+            params.model_offset_x,
+            params.model_offset_y,
+            params.model_offset_angle,
+        )?;
+        let mass = params.mass_matrix();
+        let lhs = mass + Matrix2::identity() * (STEP_S * params.viscous_friction);
+        let step_matrix = lhs.try_inverse().ok_or(MotionError::BadParameter {
+            name: "mass_matrix".to_owned(),
+            value: lhs.determinant(),
+            reason: "is singular",
+        })?;
+        Ok(Self {
+            drive,
+            frame,
+            mass,
+            step_matrix,
+        })
+    }
+}
+
 /// The physics of SPEC §5: [`Physics::step`] advances it by exactly 1 ms.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Physics {
@@ -308,20 +353,12 @@ pub struct Physics {
 impl Physics {
     /// A robot at rest at the origin, heading 0, with no map.
     pub fn new(params: PhysicsParams) -> Result<Self, MotionError> {
-        params.validate()?;
-        let drive = DiffDrive::new(params.wheel_radius, params.wheel_radius, params.axle_length)?;
-        let frame = ModelFrame::new(
-            params.model_offset_x,
-            params.model_offset_y,
-            params.model_offset_angle,
-        )?;
-        let mass = params.mass_matrix();
-        let lhs = mass + Matrix2::identity() * (STEP_S * params.viscous_friction);
-        let step_matrix = lhs.try_inverse().ok_or(MotionError::BadParameter {
-            name: "mass_matrix".to_owned(),
-            value: lhs.determinant(),
-            reason: "is singular",
-        })?;
+        let Model {
+            drive,
+            frame,
+            mass,
+            step_matrix,
+        } = Model::of(&params)?;
         Ok(Self {
             params,
             drive,
@@ -346,6 +383,28 @@ impl Physics {
     /// The parameters.
     pub fn params(&self) -> &PhysicsParams {
         &self.params
+    }
+
+    /// Replaces the parameters (PhysicsSim's configuration, SPEC §5 "Physics"): checked as
+    /// [`Physics::new`] checks them, then everything that depends on them is recomputed —
+    /// the mass matrix `M`, `(M + h·b·I)⁻¹`, the wheel geometry, the model frame and the
+    /// body's contact. The state (pose, wheel angles and rates, time) is kept, so the next
+    /// step continues from it with the new model. A bad value is refused and nothing changes.
+    pub fn set_params(&mut self, params: PhysicsParams) -> Result<(), MotionError> {
+        let Model {
+            drive,
+            frame,
+            mass,
+            step_matrix,
+        } = Model::of(&params)?;
+        self.params = params;
+        self.drive = drive;
+        self.frame = frame;
+        self.mass = mass;
+        self.step_matrix = step_matrix;
+        // The body radius may have changed: an obstacle now under the body is a bump.
+        self.refresh_touch();
+        Ok(())
     }
 
     /// The state.

@@ -374,9 +374,7 @@ impl PurePursuit {
         let turn_rate = |err: f64| {
             let mag = (params.heading_gain * err.abs())
                 .min(params.max_angular_velocity)
-                .min(libm::sqrt(
-                    2.0 * params.max_angular_acceleration * err.abs(),
-                ));
+                .min(f64::sqrt(2.0 * params.max_angular_acceleration * err.abs()));
             if err < 0.0 { -mag } else { mag }
         };
 
@@ -473,7 +471,7 @@ impl PurePursuit {
                     let d_stop = (hi - proj.s - params.goal_tolerance).max(0.0);
                     let mut v = params
                         .max_velocity
-                        .min(libm::sqrt(params.max_acceleration * d_stop))
+                        .min(f64::sqrt(params.max_acceleration * d_stop))
                         .max(params.min_velocity)
                         .min(params.max_velocity);
                     if kappa != 0.0 {

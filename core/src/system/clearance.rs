@@ -14,8 +14,7 @@ fn square_d2(x: f64, y: f64, lx: f64, ly: f64, g: f64) -> f64 {
 
 /// The distance from `(x, y)` to the nearest obstacle square, exact: the square root of the
 /// smallest squared distance, or the distance to the map's edge if that is smaller; 0 inside
-/// an obstacle cell or outside the map. (One square root per call: `libm::sqrt` is a
-/// software routine on wasm32.)
+/// an obstacle cell or outside the map. (One square root per call.)
 ///
 /// Cells are visited in rings of growing Chebyshev distance `k` around the point's cell; a
 /// cell of ring `k ≥ 1` is at least `(k − 1)·g` away, so the search stops once that bound
@@ -62,7 +61,7 @@ pub fn clearance(map: &GridMap, x: f64, y: f64) -> f64 {
         }
         k += 1;
     }
-    border.min(libm::sqrt(best_d2))
+    border.min(f64::sqrt(best_d2))
 }
 
 /// A lower bound of [`clearance`] from the distance transform alone (one look-up): the
@@ -73,7 +72,7 @@ pub fn clearance_lower_bound(map: &GridMap, x: f64, y: f64) -> f64 {
         Some(c) => {
             let (cx, cy) = map.cell_center(c);
             map.obstacle_distance(c)
-                - libm::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy))
+                - f64::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy))
                 - map.grid_size() * core::f64::consts::FRAC_1_SQRT_2
         }
         None => 0.0,
@@ -144,7 +143,7 @@ impl ClearanceTracker {
                 best_d2 = d2;
             }
         }
-        border_distance(map, x, y).min(libm::sqrt(best_d2))
+        border_distance(map, x, y).min(f64::sqrt(best_d2))
     }
 
     /// Collects every in-map obstacle square within `radius` of `(x, y)`.
@@ -206,7 +205,7 @@ mod tests {
                 }
             }
         }
-        border.min(libm::sqrt(best_d2))
+        border.min(f64::sqrt(best_d2))
     }
 
     #[test]

@@ -60,6 +60,9 @@
 //!   [`System::inject_fault`], [`System::set_rate`]; [`System::state`] and
 //!   [`System::component_info`] (state, last error, rate, status); each component's
 //!   parameters as `&mut dyn ConfigAccess` ([`System::config_mut`]).
+//! - Teaching tools: [`System::config`] (read-only twin of `config_mut`), the whole
+//!   configuration as one OpenRTM `.conf` text ([`System::to_conf`], [`System::load_conf`],
+//!   all-or-nothing), [`System::inspect_cell`] (map and potential field at one cell).
 //! - Running: [`System::step`] (base ticks), [`System::run_for`], [`System::run_until`];
 //!   [`System::preview`] plans without driving (the page's first frame, `rtnav render`).
 //! - Output: [`System::events`] ([`SystemEvent`], stamped with the simulated time of the tick
@@ -81,6 +84,12 @@
 mod clearance;
 mod events;
 mod kind;
+// --- teaching tools (branch `teachcore`): the configuration bundle, the cell inspector ---
+mod conf_bundle;
+mod inspect;
+pub use conf_bundle::CONF_BUNDLE_HEADER;
+pub use inspect::{CellInspection, FieldInspection};
+
 mod rates;
 mod runner;
 mod runtime;

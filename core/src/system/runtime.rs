@@ -672,7 +672,8 @@ impl System {
     }
 
     /// A component's configuration parameters, to read and edit live (SPEC §1
-    /// "Configuration parameters"). MapBuilder, MapMaintenance and the physics have none.
+    /// "Configuration parameters"). MapBuilder and MapMaintenance have none; PhysicsSim's
+    /// are the model's dynamics (SPEC §5 "Physics"), used from its next tick on.
     pub fn config_mut(&mut self, kind: ComponentKind) -> crate::Result<&mut dyn ConfigAccess> {
         let c = self.ec.component_dyn_mut(Self::id(kind))?;
         c.configuration().ok_or_else(|| {
@@ -1127,7 +1128,7 @@ impl System {
         if let Some(last) = self.last_pose {
             let (dx, dy) = (pose.x - last.x, pose.y - last.y);
             if dx != 0.0 || dy != 0.0 {
-                self.stats.path_length += libm::sqrt(dx * dx + dy * dy);
+                self.stats.path_length += f64::sqrt(dx * dx + dy * dy);
             }
         }
         self.last_pose = Some(pose);

@@ -30,7 +30,7 @@ use super::events::EventKind;
 use super::kind::ComponentKind;
 use super::rates::Rates;
 use super::runtime::System;
-use super::scenario::{MapSource, MemoryResolver, Scenario};
+use super::scenario::{FileResolver, MapSource, MemoryResolver, Scenario};
 use crate::components::MapUpdate;
 use crate::errors::SystemError;
 use crate::interfaces::{Direction, Pose};
@@ -257,8 +257,14 @@ impl Session {
     pub fn load_scenario(
         &mut self,
         scenario: Scenario,
-        files: MemoryResolver,
+        resolver: &dyn FileResolver,
     ) -> crate::Result<()> {
+        // The files the map needs are kept, to replay set-ups without the resolver.
+        let mut files = MemoryResolver::new();
+        for path in scenario.map_files(resolver)? {
+            let bytes = resolver.read(&path)?.into_owned();
+            files.insert(&path, bytes);
+        }
         let setup = Setup {
             v: SHARE_VERSION,
             scenario: scenario.name.clone(),
@@ -281,6 +287,14 @@ impl Session {
             },
         );
         Ok(())
+    }
+
+    /// Replaces the whole configuration from one `.conf` text ([`System::load_conf`]);
+    /// all-or-nothing. A changed planning parameter is planned at once while the robot
+    /// stands.
+    pub fn load_conf(&mut self, text: &str) -> crate::Result<()> {
+        self.system.load_conf(text)?;
+        self.replan_after_parameters(&ComponentKind::PLANNING)
     }
 
     /// Loads a map the user picked into a fresh system with the planning components active

@@ -1,0 +1,248 @@
+//! The whole system's configuration as one OpenRTM `.conf` text (SPEC §1 "Configuration
+//! parameters"; the teaching page's export and import).
+//!
+//! **Decision (bundle format)**: the text is a sequence of blocks, one per component that
+//! has configuration parameters, in [`ComponentKind::ALL`] order. Each block starts with a
+//! marker comment line `# [InstanceName]` (e.g. `# [LocalPathPlanning0]`) followed by exactly
+//! that component's own `.conf` text as [`ConfigAccess::to_conf`] writes it. A marker is a
+//! comment to OpenRTM, so every block — cut out with its marker or without — is a valid
+//! `.conf` file for that component alone. The whole text also reads as one properties file
+//! (the markers are comments), but keys such as `conf.default.dmin` recur in several blocks:
+//! only the markers say whose they are.
+//! Before the first marker only comments and blank lines may stand (the export writes one
+//! comment line there).
+//!
+//! ```text
+//! # rtnav configuration: one OpenRTM .conf block per component, each after its marker line `# [InstanceName]`.
+//!
+//! # [PhysicsSim0]
+//! # -*- Property -*-
+//! # Written by rtnav (OpenRTM .conf syntax).
+//! configuration.active_config: default
+//!
+//! conf.default.Mass: 20.0
+//! conf.default.YawInertia: 1.0
+//! conf.default.ViscousFriction: 0.02
+//! conf.default.MaxTorque: 5.0
+//!
+//! # [MotorControl0]
+//! …
+//! ```
+//!
+//! Reading ([`System::load_conf`]) is all-or-nothing: the text is split at the markers, each
+//! block is parsed ([`ConfFile::parse`]) and applied to a clone of its component's
+//! configuration; only when every block succeeded are the blocks applied to the components.
+//! A component without a block keeps its configuration. Errors name the line of the whole
+//! file, the component and the problem: an unknown or repeated marker, text before the first
+//! marker, an unknown key, a value that is not a number or out of range.
+
+use crate::errors::{ConfigError, SystemError};
+use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet};
+
+use super::kind::ComponentKind;
+use super::runtime::System;
+
+/// The bundle's first line, written by [`System::to_conf`].
+pub const CONF_BUNDLE_HEADER: &str = "# rtnav configuration: one OpenRTM .conf block per \
+    component, each after its marker line `# [InstanceName]`.";
+
+/// The instance name in a block marker line `# [NAME]`, if `line` is one.
+fn marker(line: &str) -> Option<&str> {
+    let inner = line
+        .trim()
+        .strip_prefix('#')?
+        .trim()
+        .strip_prefix('[')?
+        .strip_suffix(']')?
+        .trim();
+    Some(inner)
+}
+
+/// One component's block of a bundle.
+struct Block {
+    kind: ComponentKind,
+    /// 1-based line of the marker.
+    marker_line: usize,
+    conf: ConfFile,
+}
+
+/// Loads `conf` into a clone of `config`: whether the block applies, nothing changed.
+fn trial<P: ParameterSet>(config: &Configuration<P>, conf: &ConfFile) -> Result<(), ConfigError> {
+    config.clone().load_conf(conf)
+}
+
+/// The 1-based line a `.conf` problem names, if it names one.
+fn problem_line(e: &ConfigError) -> Option<usize> {
+    match e {
+        ConfigError::UnknownParameter { line, .. }
+        | ConfigError::OutOfRange { line, .. }
+        | ConfigError::BadValue { line, .. } => *line,
+        ConfigError::Syntax { line, .. } => Some(*line),
+        _ => None,
+    }
+}
+
+impl Block {
+    /// `problem` as the bundle's error: the line it names, else (an unknown configuration
+    /// set) the block's last `configuration.active_config` line, else the marker's.
+    fn error(&self, problem: ConfigError) -> crate::Error {
+        let line = problem_line(&problem)
+            .or_else(|| {
+                self.conf
+                    .entries
+                    .iter()
+                    .rev()
+                    .find(|e| e.key == ConfKey::ActiveSet)
+                    .map(|e| e.line)
+            })
+            .unwrap_or(self.marker_line);
+        SystemError::ConfBlock {
+            component: self.kind.instance_name().to_owned(),
+            line,
+            problem,
+        }
+        .into()
+    }
+}
+
+impl System {
+    /// A component's configuration parameters, to read (SPEC §1 "Configuration
+    /// parameters"); the read-only twin of [`System::config_mut`]. MapBuilder and
+    /// MapMaintenance have none.
+    pub fn config(&self, kind: ComponentKind) -> crate::Result<&dyn ConfigAccess> {
+        Ok(match kind {
+            ComponentKind::PhysicsSim => self.physics().config(),
+            ComponentKind::MotorControl => self.motor_control().config(),
+            ComponentKind::Localization => self.localization().config(),
+            ComponentKind::GlobalPathPlanning => self.global_path_planning().config(),
+            ComponentKind::LocalPathPlanning => self.local_path_planning().config(),
+            ComponentKind::DriveControl => self.drive_control().config(),
+            ComponentKind::MapBuilder | ComponentKind::MapMaintenance => {
+                return Err(SystemError::NoConfiguration {
+                    component: kind.name().to_owned(),
+                }
+                .into());
+            }
+        })
+    }
+
+    /// The components that have configuration parameters, in [`ComponentKind::ALL`] order.
+    pub fn configured_components(&self) -> Vec<ComponentKind> {
+        ComponentKind::ALL
+            .into_iter()
+            .filter(|&k| self.config(k).is_ok())
+            .collect()
+    }
+
+    /// The whole configuration as one OpenRTM `.conf` text (the module's bundle format):
+    /// [`CONF_BUNDLE_HEADER`], then per component with parameters a blank line, its marker
+    /// `# [InstanceName]` and its own `.conf` text. Every configuration set is written.
+    pub fn to_conf(&self) -> String {
+        let mut out = String::from(CONF_BUNDLE_HEADER);
+        out.push('\n');
+        for kind in ComponentKind::ALL {
+            if let Ok(config) = self.config(kind) {
+                out.push('\n');
+                out += &format!("# [{}]\n", kind.instance_name());
+                out += &config.to_conf();
+            }
+        }
+        out
+    }
+
+    /// Applies a configuration bundle (the module's format; [`System::to_conf`] writes one).
+    /// All-or-nothing: every block is checked on a clone of its configuration first; on any
+    /// error nothing changes and the error names the line (of the whole text), the component
+    /// and the problem. Components without a block keep their configuration. `always`
+    /// parameters take effect at once, `on_activation` ones at the next activation.
+    pub fn load_conf(&mut self, text: &str) -> crate::Result<()> {
+        let blocks = self.split_conf(text)?;
+        for block in &blocks {
+            let checked = match block.kind {
+                ComponentKind::PhysicsSim => trial(self.physics().config(), &block.conf),
+                ComponentKind::MotorControl => trial(self.motor_control().config(), &block.conf),
+                ComponentKind::Localization => trial(self.localization().config(), &block.conf),
+                ComponentKind::GlobalPathPlanning => {
+                    trial(self.global_path_planning().config(), &block.conf)
+                }
+                ComponentKind::LocalPathPlanning => {
+                    trial(self.local_path_planning().config(), &block.conf)
+                }
+                ComponentKind::DriveControl => trial(self.drive_control().config(), &block.conf),
+                // `split_conf` keeps only components with parameters.
+                ComponentKind::MapBuilder | ComponentKind::MapMaintenance => Ok(()),
+            };
+            checked.map_err(|e| block.error(e))?;
+        }
+        // Commit: the same blocks on the same configurations, so each succeeds as its trial did.
+        for block in &blocks {
+            let config = self.config_mut(block.kind)?;
+            config.load_conf(&block.conf).map_err(|e| block.error(e))?;
+        }
+        Ok(())
+    }
+
+    /// Splits a bundle at its markers and parses each block, with line numbers of the whole
+    /// text.
+    fn split_conf(&self, text: &str) -> crate::Result<Vec<Block>> {
+        let lines: Vec<&str> = text.lines().collect();
+        // (kind, 0-based marker index) of each block, in file order.
+        let mut starts: Vec<(ComponentKind, usize)> = Vec::new();
+        for (i, &raw) in lines.iter().enumerate() {
+            let line = i + 1;
+            if let Some(name) = marker(raw) {
+                let kind = ComponentKind::ALL
+                    .into_iter()
+                    .find(|k| k.instance_name() == name || k.name() == name)
+                    .filter(|&k| self.config(k).is_ok())
+                    .ok_or_else(|| SystemError::ConfUnknownComponent {
+                        line,
+                        name: name.to_owned(),
+                        expected: self
+                            .configured_components()
+                            .iter()
+                            .map(|k| k.instance_name())
+                            .collect::<Vec<_>>()
+                            .join(", "),
+                    })?;
+                if let Some(&(_, first)) = starts.iter().find(|(k, _)| *k == kind) {
+                    return Err(SystemError::ConfDuplicateComponent {
+                        line,
+                        component: kind.instance_name().to_owned(),
+                        first: first + 1,
+                    }
+                    .into());
+                }
+                starts.push((kind, i));
+            } else if starts.is_empty() {
+                let t = raw.trim();
+                if !(t.is_empty() || t.starts_with('#') || t.starts_with('!')) {
+                    return Err(SystemError::ConfOutsideBlock {
+                        line,
+                        text: raw.to_owned(),
+                    }
+                    .into());
+                }
+            }
+        }
+        let mut blocks = Vec::with_capacity(starts.len());
+        for (n, &(kind, start)) in starts.iter().enumerate() {
+            let end = starts.get(n + 1).map_or(lines.len(), |&(_, s)| s);
+            // The block's own lines, after as many empty lines as precede them, so the
+            // parser's line numbers are those of the whole text.
+            let mut block_text = "\n".repeat(start + 1);
+            for l in &lines[start + 1..end] {
+                block_text.push_str(l);
+                block_text.push('\n');
+            }
+            let mut block = Block {
+                kind,
+                marker_line: start + 1,
+                conf: ConfFile::default(),
+            };
+            block.conf = ConfFile::parse(&block_text).map_err(|e| block.error(e))?;
+            blocks.push(block);
+        }
+        Ok(blocks)
+    }
+}

@@ -1,0 +1,108 @@
+//! The cell inspector (the teaching page's hover panel and `rtnav inspect`): what the map and
+//! LocalPathPlanning's potential field say about one cell (SPEC §2 obstacle distance, SPEC §3
+//! step 4 / 000 §5.2.4.9 potential `G = G(parent) + R + A + P`).
+
+use serde::Serialize;
+
+use crate::errors::SystemError;
+use crate::local::CellState;
+use crate::map;
+
+use super::runtime::System;
+
+/// Everything about one map cell, as the inspector shows it (JSON: `{x, y, occupancy,
+/// obstacle_distance, impassable, field}`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CellInspection {
+    /// Column.
+    pub x: i64,
+    /// Row.
+    pub y: i64,
+    /// The map's value: 0 free, 1 obstacle (SPEC §2).
+    pub occupancy: u8,
+    /// Metres from the cell's centre to the nearest obstacle cell's centre (SPEC §2; 0 on an
+    /// obstacle cell).
+    pub obstacle_distance: f64,
+    /// Whether the cell is within LocalPathPlanning's effective `dmin` of an obstacle
+    /// ([`map::within_dmin`], SPEC §3 step 4: impassable).
+    pub impassable: bool,
+    /// The potential field's view of the cell; `None` while LocalPathPlanning has no field
+    /// for this map.
+    pub field: Option<FieldInspection>,
+}
+
+/// One cell of LocalPathPlanning's potential field (000 §5.2.4.9). The numbers are defined
+/// on reached cells only (`None` elsewhere): `potential` is `G`, and for every reached cell
+/// but the local target `G = G(parent) + repulsion + attraction + posture`; the target has
+/// `G` = 0.1 and parts 0.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FieldInspection {
+    /// Potential `G`.
+    pub potential: Option<f64>,
+    /// Repulsion `R = 1 / (d − dmin)²`.
+    pub repulsion: Option<f64>,
+    /// Attraction `A = L · (100 − PCL) / 100`.
+    pub attraction: Option<f64>,
+    /// Posture `P`.
+    pub posture: Option<f64>,
+    /// The field's cell state: `Reached`, `Unreached` or `Impassable`
+    /// ([`CellState`]'s names).
+    pub state: String,
+    /// Whether the cell is passable but was not reached (not connected to the local target,
+    /// or beyond where the field stopped).
+    pub unreached: bool,
+}
+
+fn state_name(s: CellState) -> &'static str {
+    match s {
+        CellState::Reached => "Reached",
+        CellState::Unreached => "Unreached",
+        CellState::Impassable => "Impassable",
+    }
+}
+
+impl System {
+    /// What the current map and LocalPathPlanning's latest potential field say about cell
+    /// `(x, y)`. Errors: no map loaded, or a cell outside the map (named).
+    pub fn inspect_cell(&self, x: i64, y: i64) -> crate::Result<CellInspection> {
+        let map = self.map().ok_or(SystemError::NoMap {
+            call: "inspect_cell",
+        })?;
+        if !map.contains(x, y) {
+            return Err(SystemError::CellOutsideMap {
+                x,
+                y,
+                width: map.width(),
+                height: map.height(),
+            }
+            .into());
+        }
+        let cell = (x as usize, y as usize);
+        let lpp = self.local_path_planning();
+        let distance = map.obstacle_distance(cell);
+        let field = lpp
+            .potential_field()
+            .filter(|f| f.width() == map.width() && f.height() == map.height())
+            .and_then(|f| f.info(cell))
+            .map(|info| {
+                let reached = info.state == CellState::Reached;
+                let defined = |v: f64| reached.then_some(v);
+                FieldInspection {
+                    potential: defined(info.potential),
+                    repulsion: defined(info.repulsion),
+                    attraction: defined(info.attraction),
+                    posture: defined(info.posture),
+                    state: state_name(info.state).to_owned(),
+                    unreached: info.state == CellState::Unreached,
+                }
+            });
+        Ok(CellInspection {
+            x,
+            y,
+            occupancy: map.cells()[map.index(cell)],
+            obstacle_distance: distance,
+            impassable: map::within_dmin(distance, lpp.params().dmin),
+            field,
+        })
+    }
+}
