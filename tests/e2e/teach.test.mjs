@@ -161,6 +161,7 @@ test('PGainL while driving changes the torques and their plot; lengthOfAxle wait
   await page.waitForTimeout(600);
   axle = param(await params(page), 'MotorControl', 'lengthOfAxle');
   assert.deepEqual([axle.effective, axle.pending], [0.441, true], 'still waiting while Active');
+  await page.$eval(row('MotorControl', 'lengthOfAxle'), (e) => e.scrollIntoView({ block: 'center' }));
   await screenshot(page, 'teach-pending.png', { docs: false });
   const mc = '#components li[data-component="MotorControl"]';
   await showTab(page, 'rtc');
@@ -216,6 +217,7 @@ test('the inspector shows, for the cell under the mouse, exactly what the native
     return [onPath, obstacle, near];
   });
   for (const cell of cells) assert.ok(cell, JSON.stringify(cells));
+  console.log(`inspected cells: on the path ${cells[0]}, obstacle ${cells[1]}, within dmin ${cells[2]}`);
   for (const cell of cells) {
     const [x, y] = await cellToPage(page, cell);
     await page.mouse.move(x - 3, y);
