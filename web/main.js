@@ -12,6 +12,11 @@ import { createToolbar } from './js/panels/toolbar.js';
 import { createRtcPanel } from './js/panels/rtc.js';
 import { createEventLog } from './js/panels/event-log.js';
 import { createTelemetry } from './js/panels/telemetry.js';
+import { createTabs } from './js/tabs.js';
+import { createParamsPanel } from './js/panels/params.js';
+import { createInspector } from './js/panels/inspector.js';
+import { createPlots } from './js/panels/plots.js';
+import { createShare } from './js/panels/share.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -53,6 +58,11 @@ async function boot() {
   const toolbar = createToolbar($('toolbar'), $('clock-controls'), app);
   const rtc = createRtcPanel($('rtc-panel'), app);
   const telemetry = createTelemetry($('telemetry'), app);
+  const params = createParamsPanel($('params-panel'), app);
+  const inspector = createInspector($('inspector-panel'), app);
+  const plots = createPlots($('plots-panel'), app);
+  createShare($('share'), $('view'), app);
+  const tabs = createTabs($('panel-tabs'), [...document.querySelectorAll('#panels .tab-panel')], app, 'rtc');
   const scenarios = createScenarios(
     { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
       description: $('about-description'), lesson: $('about-lesson') },
@@ -75,6 +85,11 @@ async function boot() {
     app.log.update();
     telemetry.update();
     toolbar.update();
+    // The teaching panels work only while shown, and at their own pace (not every frame).
+    const now = performance.now();
+    params.update(now, tabs.visible('params'));
+    inspector.update(now, tabs.visible('inspector'));
+    plots.update(now, tabs.visible('plots'));
     return !guard.crashed;
   });
   guard.onCrash(() => loop.stop());
@@ -84,6 +99,8 @@ async function boot() {
     demo,
     app,
     scenarios,
+    tabs,
+    inspector,
     /** Frame times (step + render + blit) of the last frames, ms. */
     frameTimes: () => frameTimes.slice(),
     clearFrameTimes: () => { frameTimes.length = 0; },
@@ -92,7 +109,8 @@ async function boot() {
     debugPanic: () => guard.call(() => demo.debug_panic()),
   };
 
-  await scenarios.loadDefault();
+  // A share link (`?share=TOKEN`) opens its set-up; anything else the default scenario.
+  await scenarios.loadDefault(new URLSearchParams(location.search).get('share'));
   document.body.dataset.ready = 'true';
 }
 

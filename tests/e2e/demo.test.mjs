@@ -9,111 +9,25 @@
 // 1280×800 (printed); a Rust panic shown as a crash.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtemp, mkdir, rm, copyFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { join } from 'node:path';
+import {
+  REPO, WAIT, COLOURS, launch, openPage, screenshot, plan, telemetry, mapInfo, cellToPage,
+  expectState, activateAll, logged,
+} from './helpers.mjs';
 
-const URL = process.env.RTNAV_URL ?? 'http://127.0.0.1:8080/';
-const CHROMIUM = process.env.RTNAV_CHROMIUM ?? '/usr/bin/chromium';
-const HERE = dirname(fileURLToPath(import.meta.url));
-const REPO = join(HERE, '..', '..');
-const ARGS = [
-  '--headless',
-  '--no-sandbox',
-  '--disable-gpu',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--disable-sync',
-  '--no-first-run',
-  '--disable-quic',
-];
-const WAIT = { timeout: 20_000 };
-const COLOURS = { Inactive: 'rgb(0, 0, 255)', Active: 'rgb(0, 255, 0)', Error: 'rgb(255, 0, 0)' };
 /** The frame budget of one frame (simulation + render + blit), ms. */
 const BUDGET_MS = 8;
 
-let profile;
-let context;
-
+let browser;
 before(async () => {
-  profile = await mkdtemp(join(tmpdir(), 'rtnav-e2e-profile-'));
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: CHROMIUM,
-    headless: true,
-    args: ARGS,
-    viewport: { width: 1280, height: 800 },
-  });
+  browser = await launch();
 });
-
 after(async () => {
-  await context?.close();
-  if (profile) await rm(profile, { recursive: true, force: true });
+  await browser?.close();
 });
 
 /** A fresh page, loaded and ready; `problems` collects page errors and console errors. */
-async function open() {
-  const page = await context.newPage();
-  const problems = [];
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('console', (m) => {
-    if (m.type() === 'error') problems.push(`console.error: ${m.text()}`);
-  });
-  await page.goto(URL, { waitUntil: 'domcontentloaded', timeout: 60_000 });
-  await page.waitForSelector('body[data-ready="true"], #crash:not([hidden])', { timeout: 60_000 });
-  if (await page.isVisible('#crash')) {
-    assert.fail(`the page did not start: ${await page.innerText('#crash')}\n${problems.join('\n')}`);
-  }
-  return { page, problems };
-}
-
-/** Saves a screenshot in tests/e2e/out/ (and, for the README's, docs/ with UPDATE_SCREENSHOTS=1). */
-async function screenshot(page, name, { docs = true } = {}) {
-  await mkdir(join(HERE, 'out'), { recursive: true });
-  const shot = join(HERE, 'out', name);
-  await page.evaluate(() => document.activeElement?.blur());
-  await page.screenshot({ path: shot });
-  if (docs && process.env.UPDATE_SCREENSHOTS === '1') {
-    await mkdir(join(REPO, 'docs'), { recursive: true });
-    await copyFile(shot, join(REPO, 'docs', name));
-  }
-}
-
-const json = (page, call) => page.evaluate((c) => JSON.parse(window.rtnav.demo[c]()), call);
-const plan = (page) => json(page, 'plan_json');
-const telemetry = (page) => json(page, 'telemetry_json');
-const mapInfo = (page) => json(page, 'map_json');
-
-/** Page coordinates of the centre of map cell (x, y). */
-function cellToPage(page, [x, y]) {
-  return page.evaluate(([x, y]) => {
-    const m = JSON.parse(window.rtnav.demo.map_json());
-    const wx = m.origin[0] + (x + 0.5) * m.grid_size;
-    const wy = m.origin[1] + (y + 0.5) * m.grid_size;
-    const [px, py] = window.rtnav.demo.world_to_pixel(wx, wy);
-    const c = document.getElementById('overlay');
-    const r = c.getBoundingClientRect();
-    return [r.left + (px * r.width) / c.width, r.top + (py * r.height) / c.height];
-  }, [x, y]);
-}
-
-/** Waits until component `name`'s row shows `state`, in the RT System Editor's colour. */
-async function expectState(page, name, state) {
-  const row = `#components li[data-component="${name}"]`;
-  await page.waitForSelector(`${row}[data-state="${state}"]`, WAIT);
-  const badge = await page.$eval(`${row} .state-badge`, (e) => [e.textContent, getComputedStyle(e).backgroundColor]);
-  assert.deepEqual(badge, [state, COLOURS[state]], `${name} in ${state}`);
-}
-
-async function activateAll(page) {
-  await page.click('#activate-all');
-  await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
-}
-
-/** The log entries of `kind`, oldest first. */
-const logged = (page, kind) =>
-  page.$$eval(`#events li[data-kind="${kind}"] .text`, (items) => items.map((i) => i.textContent).reverse());
+const open = () => openPage(browser.context);
 
 test('the default scenario is drawn, and Activate all drives the robot to the goal', { timeout: 120_000 }, async () => {
   const { page, problems } = await open();

@@ -2,7 +2,11 @@
 // `cargo xtask`) and loading a map file the user picks. The bytes go to Rust (`Files`);
 // which loader a file needs, and whether it is good, is decided there. A bad file is
 // refused with the reason and the current map stays.
-import { Files } from '../pkg/rtnav_wasm.js';
+//
+// A share link (`?share=TOKEN`, issue 8) names a scenario (`Demo.share_scenario`): that
+// scenario is loaded the usual way, then the token's start, goal, map edits and parameters
+// are applied (`apply_share`). A bad link is explained and the default scenario shown.
+import { Demo, Files } from '../pkg/rtnav_wasm.js';
 import { el } from './dom.js';
 
 const INDEX_URL = 'fixtures/index.json';
@@ -28,14 +32,20 @@ export function createScenarios(dom, app) {
     if (s) {
       dom.title.textContent = `About this scenario: ${s.name.replaceAll('_', ' ')}`;
       dom.description.textContent = s.description;
-      dom.lesson.textContent = s.lesson ? `Try this: ${s.lesson}` : '';
+      showLesson(s.lesson);
     } else {
       dom.title.textContent = `Map file: ${map?.name ?? ''}`;
       dom.description.textContent = map
         ? `${map.width}×${map.height} cells of ${map.grid_size} m. Place the robot with the Start tool, then drag a goal, then Activate all.`
         : '';
-      dom.lesson.textContent = '';
+      showLesson('');
     }
+  }
+
+  /** The scenario's lesson, prominent: "Try this: …". */
+  function showLesson(text) {
+    dom.lesson.replaceChildren(el('strong', {}, 'Try this'), ' ', text ?? '');
+    dom.lesson.hidden = !text;
   }
 
   function loaded(what) {
@@ -47,8 +57,13 @@ export function createScenarios(dom, app) {
     app.log.page(what, 'info');
   }
 
-  /** Loads the scenario named `name` from the fixtures. Returns whether it loaded. */
-  async function load(name) {
+  /**
+   * Loads the scenario named `name` from the fixtures, then applies the share token `share`
+   * if given. Returns whether it loaded; with a token that could not be applied it returns
+   * `{ shareError }` (the scenario is then loaded without the token's set-up, announced to
+   * nobody: the caller loads the default).
+   */
+  async function load(name, share = null) {
     const entry = index.scenarios.find((s) => s.name === name);
     if (!entry) {
       app.notice.show(`No scenario named ${name}.`, 'error');
@@ -63,6 +78,10 @@ export function createScenarios(dom, app) {
       Object.keys(entry.files).forEach((path, i) => files.add(path, bytes[i]));
       const r = app.attempt(() => demo.load_scenario(text, files));
       if (!r.ok) throw new Error(r.error);
+      if (share !== null) {
+        const s = app.attempt(() => demo.apply_share(share));
+        if (!s.ok) return { shareError: s.error };
+      }
     } catch (e) {
       app.notice.show(`Could not load scenario ${name}: ${e.message ?? e}. The current one stays.`, 'error');
       app.log.page(`Scenario ${name} not loaded: ${e.message ?? e}`, 'error');
@@ -73,8 +92,38 @@ export function createScenarios(dom, app) {
     }
     current = name;
     dom.select.value = name;
-    loaded(`Scenario ${name} loaded. Press Activate all to drive.`);
+    loaded(share === null
+      ? `Scenario ${name} loaded. Press Activate all to drive.`
+      : `Shared set-up of scenario ${name} loaded (its start, goal, map edits and parameters). Press Activate all to drive.`);
     return true;
+  }
+
+  /** Loads the set-up a share link carries; false (with a notice) when it cannot. */
+  async function loadShared(token) {
+    let name;
+    try {
+      name = app.guard.call(() => Demo.share_scenario(token));
+    } catch (e) {
+      return refuseShare(e?.message ?? String(e));
+    }
+    if (name === undefined) return false;
+    if (!index.scenarios.some((s) => s.name === name)) {
+      return refuseShare(`it is made for the scenario ${name}, which this page does not have`);
+    }
+    const r = await load(name, token);
+    if (r === true) {
+      app.notice.show(`Shared set-up of ${name.replaceAll('_', ' ')} loaded.`, 'success');
+      return true;
+    }
+    if (r && r.shareError) return refuseShare(r.shareError);
+    return false;
+  }
+
+  let shareRefusal = null;
+  function refuseShare(reason) {
+    shareRefusal = `This share link cannot be used: ${reason}. The default scenario is shown instead.`;
+    app.notice.show(shareRefusal, 'error');
+    return false;
   }
 
   async function loadFiles(list) {
@@ -113,15 +162,27 @@ export function createScenarios(dom, app) {
   return {
     load,
     loadFiles,
-    /** Reads the index, fills the picker and loads the default scenario. */
-    async loadDefault() {
+    /**
+     * Reads the index, fills the picker and loads the set-up of the share link `share` if
+     * given and good, else the default scenario.
+     */
+    async loadDefault(share = null) {
       index = JSON.parse(await fetchOk(INDEX_URL, 'text'));
       dom.select.replaceChildren(
         ...index.scenarios.map((s) => el('option', { value: s.name, title: s.description }, s.name.replaceAll('_', ' '))),
         custom,
       );
+      if (share !== null && await loadShared(share)) return;
       const first = index.default ?? index.scenarios[0]?.name;
       if (first) await load(first);
+      if (shareRefusal) {
+        app.log.page(shareRefusal, 'error');
+        app.notice.show(shareRefusal, 'error');
+      }
+    },
+    /** The name of the scenario loaded (null for a map file). */
+    get current() {
+      return current;
     },
     get index() {
       return index;

@@ -1,6 +1,8 @@
 // The RTC panel: every component of the system (SPEC §0) with its lifecycle state in the RT
 // System Editor's colours, the reason when it is in Error, and the requests of SPEC §1 —
-// for all components at once and for each one — plus "Inject fault".
+// for all components at once and for each one — plus "Inject fault", and for Localization
+// a "Sensor glitch" (issue 7): one NaN pose written into its InSimulatedPosition port, as
+// OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
 
 const ACTIONS = {
@@ -9,6 +11,11 @@ const ACTIONS = {
   Error: ['reset', 'Reset'],
 };
 const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
+/** The sensor glitch: which component, which InPort, what sample (x, y, z, θ). */
+const GLITCH = { component: 'Localization', port: 'InSimulatedPosition', sample: () => new Float64Array([Number.NaN, 0, 0, 0]) };
+const GLITCH_TITLE = 'Write one pose (NaN, 0, 0, 0) into Localization\'s InSimulatedPosition, as a broken sensor would '
+  + '(like OpenRTM rtshell\'s rtinject). Localization refuses it in its next execution and goes to Error with the reason; '
+  + 'Reset brings it back to Inactive.';
 
 function paint(badge, state, colour) {
   if (badge.dataset.state === state) return;
@@ -26,6 +33,7 @@ export function createRtcPanel(root, app) {
       app.notice.show(`${what} refused: ${r.error}`, 'error');
       app.log.page(`${what} refused: ${r.error}`, 'warn');
     }
+    app.emit('changed');
     return r;
   };
 
@@ -51,12 +59,20 @@ export function createRtcPanel(root, app) {
       request(`${action.textContent} ${c.name}`, () => demo[what](c.name));
     });
     fault.addEventListener('click', () => request(`Inject fault into ${c.name}`, () => demo.inject_fault(c.name)));
+    let glitch = null;
+    if (c.name === GLITCH.component) {
+      glitch = el('button', { type: 'button', class: 'glitch danger', title: GLITCH_TITLE }, 'Sensor glitch');
+      glitch.addEventListener('click', () => {
+        const r = request('Sensor glitch', () => demo.inject_input(GLITCH.component, GLITCH.port, GLITCH.sample()));
+        if (r.ok) app.log.page(`Sensor glitch: (NaN, 0, 0, 0) written into ${GLITCH.component}.${GLITCH.port}`, 'warn');
+      });
+    }
     const li = el('li', { class: 'rtc', dataset: { component: c.name } },
       badge,
       el('div', { class: 'rtc-main' }, el('div', { class: 'rtc-title' }, name, rate), status, reason),
-      el('div', { class: 'rtc-actions' }, action, fault));
+      el('div', { class: 'rtc-actions' }, action, fault, glitch));
     list.append(li);
-    const r = { li, badge, name, rate, status, reason, action, fault };
+    const r = { li, badge, name, rate, status, reason, action, fault, glitch };
     rows.set(c.name, r);
     return r;
   }
@@ -93,6 +109,8 @@ export function createRtcPanel(root, app) {
         r.action.disabled = !(c.state in ACTIONS);
         r.fault.disabled = !(c.state === 'Inactive' || c.state === 'Active') || c.fault_pending;
         setText(r.fault, c.fault_pending ? 'Fault pending…' : 'Inject fault');
+        // A sample only matters to a component that executes: Active only.
+        if (r.glitch) r.glitch.disabled = c.state !== 'Active';
         if (c.state === 'Active') active++;
         if (c.state === 'Error') error++;
       }

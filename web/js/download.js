@@ -1,0 +1,19 @@
+// Saving something the page made (a .conf, the telemetry CSV, the frame PNG) as a file.
+
+/** Offers `blob` for download as `name` (an <a download> click; the URL is freed after). */
+export function download(blob, name) {
+  const url = URL.createObjectURL(blob);
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  a.hidden = true;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+/** Offers `text` for download as `name`. */
+export function downloadText(text, name, type = 'text/plain') {
+  download(new Blob([text], { type: `${type};charset=utf-8` }), name);
+}

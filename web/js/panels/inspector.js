@@ -1,0 +1,130 @@
+// The hover inspector (issue 8): what the core knows about the map cell under the mouse
+// (`inspect_cell`): its occupancy, the distance to the nearest obstacle and whether that is
+// within dmin, and LocalPathPlanning's potential there with its parts (000 §5.2.4.9:
+// repulsion from obstacles, attraction to the goal, the posture term) and the cell's state.
+//
+// The numbers are shown rounded; each value's exact JSON text is kept in `data-value`, and
+// the whole answer from Rust in the panel's `data-json`, for the end-to-end test (which
+// compares them with the native `rtnav inspect`). The cell under the mouse comes from the
+// stage's `hover` event (`pixel_to_cell`); it is read again while shown, a few times a
+// second, because the field changes as the robot drives.
+import { el, setText } from '../dom.js';
+
+const POLL_MS = 250;
+
+const yesNo = (b) => (b ? 'yes' : 'no');
+function num(v, digits = 3) {
+  if (v === null || v === undefined) return '—';
+  if (!Number.isFinite(v)) return String(v);
+  const a = Math.abs(v);
+  if (a !== 0 && (a >= 1e5 || a < 1e-3)) return v.toExponential(3);
+  return v.toFixed(digits);
+}
+
+/** The rows: key, label, how to read it from the answer, how to show it, a hint. */
+const FIELDS = [
+  ['cell', 'Cell', (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, 'Map cell (x, y), x to the right, y up'],
+  ['occupancy', 'Occupancy', (j) => j.occupancy, (v) => `${v} · ${v === 0 ? 'free' : 'obstacle'}`, 'The map value: 0 free, 1 obstacle'],
+  ['obstacle_distance', 'Obstacle distance', (j) => j.obstacle_distance, (v) => `${num(v)} m`, 'Straight distance to the nearest obstacle cell (exact EDT)'],
+  ['impassable', 'Within dmin', (j) => j.impassable, (v) => (v ? 'yes · impassable' : 'no'), 'Closer to an obstacle than dmin: the planners do not enter it'],
+  ['potential', 'Potential', (j) => j.field?.potential ?? null, num, 'LocalPathPlanning\'s potential U (000 §5.2.4.9); the path descends it'],
+  ['repulsion', '· repulsion', (j) => j.field?.repulsion ?? null, num, 'The obstacles\' part of the potential'],
+  ['attraction', '· attraction', (j) => j.field?.attraction ?? null, num, 'The goal\'s part of the potential'],
+  ['posture', '· posture', (j) => j.field?.posture ?? null, num, 'The start and goal posture\'s part (PostureConsiderationLevel)'],
+  ['state', 'Field state', (j) => j.field?.state ?? null, (v) => v ?? '—', 'The cell\'s state in the potential field'],
+  ['unreached', 'Unreached', (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), 'Not reached by the field\'s wave from the goal'],
+];
+
+export function createInspector(root, app) {
+  const { demo } = app;
+  let cell = null;
+  let hovering = false;
+  let dirty = false;
+  let lastPoll = -Infinity;
+  let lastJson = '';
+
+  const where = el('p', { class: 'panel-hint', id: 'inspector-where' }, 'Move the mouse over the map.');
+  const list = el('dl', { class: 'inspector', id: 'inspector' });
+  const values = new Map();
+  for (const [key, label, , , hint] of FIELDS) {
+    const dd = el('dd', { dataset: { key } }, '—');
+    values.set(key, dd);
+    list.append(el('div', { class: 'inspect-row', dataset: { key } }, el('dt', { title: hint }, label), dd));
+  }
+  const error = el('p', { class: 'param-error', hidden: true });
+  root.append(
+    el('div', { class: 'panel-head' }, el('h2', {}, 'Inspector')),
+    where, list, error,
+    el('p', { class: 'panel-hint small' },
+      'The field is LocalPathPlanning\'s potential over its planning window; cells outside it, or not reached from the goal, have none.'),
+  );
+
+  function clearValues() {
+    for (const dd of values.values()) {
+      setText(dd, '—');
+      delete dd.dataset.value;
+    }
+    delete root.dataset.json;
+    delete root.dataset.cell;
+    lastJson = '';
+  }
+
+  function inspect() {
+    if (!cell) return;
+    const r = app.attempt(() => demo.inspect_cell(cell[0], cell[1]));
+    if (!r.ok) {
+      error.textContent = r.error;
+      error.hidden = false;
+      clearValues();
+      return;
+    }
+    error.hidden = true;
+    if (r.value === lastJson) return;
+    lastJson = r.value;
+    const j = JSON.parse(r.value);
+    root.dataset.json = r.value;
+    root.dataset.cell = `${j.x},${j.y}`;
+    for (const [key, , read, fmt] of FIELDS) {
+      const v = read(j);
+      const dd = values.get(key);
+      dd.dataset.value = JSON.stringify(v);
+      setText(dd, fmt(v));
+    }
+    const field = j.field ? '' : ' · no potential field yet';
+    setText(where, `${hovering ? 'Under the mouse' : 'Last cell under the mouse'}: (${j.x}, ${j.y})${field}`);
+  }
+
+  app.on('hover', (c) => {
+    hovering = Boolean(c);
+    if (!c) {
+      if (cell) setText(where, `Last cell under the mouse: (${cell[0]}, ${cell[1]})`);
+      return;
+    }
+    if (cell && c[0] === cell[0] && c[1] === cell[1]) return;
+    cell = [c[0], c[1]];
+    dirty = true;
+  });
+  app.on('loaded', () => {
+    cell = null;
+    clearValues();
+    error.hidden = true;
+    setText(where, 'Move the mouse over the map.');
+  });
+  app.on('tab', (name) => { if (name === 'inspector') dirty = true; });
+
+  return {
+    /** Called every frame: inspects a new cell at once, the same cell a few times a second. */
+    update(now, visible) {
+      if (!visible || !cell) return;
+      if (dirty || now - lastPoll >= POLL_MS) {
+        dirty = false;
+        lastPoll = now;
+        inspect();
+      }
+    },
+    /** The last answer, parsed (or null). */
+    get last() {
+      return lastJson ? JSON.parse(lastJson) : null;
+    },
+  };
+}

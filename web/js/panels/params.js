@@ -1,0 +1,249 @@
+// The parameter panel (issue 8): every configuration parameter of LocalPathPlanning,
+// MotorControl, DriveControl and PhysicsSim (`params_json()`), grouped by component, with its
+// unit, range and reflection timing (OpenRTM's 常時 "always" or 初期化時 "on activation").
+//
+// A value is edited in place (Enter or leaving the field sends it: `set_param`). Rust decides
+// whether it is good; a refused value is explained next to the field and the field goes back
+// to the value held. An `on_activation` parameter whose new value waits for the component's
+// next activation is marked "pending (next activation)" until it is in use. MotorControl's
+// service `Motor::SetPDGain` has its own small form, and the whole configuration can be
+// saved and loaded as one OpenRTM `.conf` file.
+//
+// The panel reads `params_json()` when the system changes (app events `loaded`, `changed`)
+// and every half second while it is shown — never every frame. Rows carry the raw values
+// (`data-value`, `data-effective`, `data-pending`) for the end-to-end tests.
+import { el, setText } from '../dom.js';
+import { downloadText } from '../download.js';
+
+const POLL_MS = 500;
+const REFLECTION = {
+  always: ['always', 'Reflected always (常時): the component uses a new value at once.'],
+  on_activation: ['on activation',
+    'Reflected on activation (初期化時): a new value waits until the component is next activated (Deactivate, then Activate).'],
+};
+const PD_GAINS = [['PGainL', 'P left'], ['PGainR', 'P right'], ['DGainL', 'D left'], ['DGainR', 'D right']];
+
+/** A parameter's value as text that reads back as the same number. */
+const show = (v) => (v === null || v === undefined ? '' : String(v));
+const unitText = (u) => (!u || u === '-' ? '–' : u);
+
+export function createParamsPanel(root, app) {
+  const { demo } = app;
+  let last = '';
+  let dirty = true;
+  let lastPoll = -Infinity;
+  const rows = new Map();
+  const groups = new Map();
+  /** The latest parsed `params_json()`, by `component/name`. */
+  const held = new Map();
+
+  // ---------------------------------------------------------------- head: .conf files
+  const message = el('p', { class: 'panel-message', id: 'conf-message', role: 'status', hidden: true });
+  const say = (text, level) => {
+    message.textContent = text;
+    message.dataset.level = level;
+    message.hidden = !text;
+  };
+  const exportButton = el('button', {
+    type: 'button', class: 'secondary', id: 'conf-export',
+    title: 'Save the whole configuration (every component with parameters) as one OpenRTM .conf file',
+    onclick: () => {
+      const r = app.attempt(() => demo.conf_export());
+      if (!r.ok) return say(`Export failed: ${r.error}`, 'error');
+      downloadText(r.value, 'rtnav.conf');
+      say('Configuration saved as rtnav.conf.', 'success');
+    },
+  }, 'Export .conf');
+  const importInput = el('input', { type: 'file', id: 'conf-import', accept: '.conf,text/plain' });
+  importInput.addEventListener('change', async () => {
+    const file = importInput.files?.[0];
+    importInput.value = '';
+    if (!file) return;
+    const text = await file.text();
+    const r = app.attempt(() => demo.conf_import(text));
+    if (!r.ok) {
+      say(`${file.name} not imported (nothing changed): ${r.error}`, 'error');
+      app.log.page(`.conf import refused: ${r.error}`, 'warn');
+      return;
+    }
+    say(`${file.name} imported.`, 'success');
+    app.log.page(`Configuration imported from ${file.name}`, 'info');
+    app.emit('changed');
+  });
+  const importButton = el('label', {
+    class: 'file-button light', title: 'Load an OpenRTM .conf file: all of it or nothing (a bad line is reported)',
+  }, 'Import .conf…', importInput);
+
+  const body = el('div', { class: 'param-groups', id: 'param-groups' });
+  root.append(
+    el('div', { class: 'panel-head' }, el('h2', {}, 'Parameters'),
+      el('span', { class: 'head-actions' }, exportButton, importButton)),
+    el('p', { class: 'panel-hint' }, 'Type a value and press Enter. A refused value is explained and put back.'),
+    message,
+    body,
+  );
+
+  // ---------------------------------------------------------------- rows
+
+  function send(row, text) {
+    const { component, name } = row;
+    const r = app.attempt(() => demo.set_param(component, name, text));
+    if (!r.ok) {
+      row.error.textContent = r.error;
+      row.error.hidden = false;
+      row.node.classList.add('refused');
+      const p = held.get(`${component}/${name}`);
+      row.input.value = show(p?.value);
+      app.log.page(`${component}.${name} = ${text} refused: ${r.error}`, 'warn');
+    } else {
+      row.error.hidden = true;
+      row.node.classList.remove('refused');
+      app.log.page(`${component}.${name} = ${text}`, 'info');
+    }
+    dirty = true;
+    refresh();
+    if (r.ok) row.input.value = show(held.get(`${component}/${name}`)?.value);
+    app.emit('changed');
+  }
+
+  function makeRow(group, c, p) {
+    const id = `param-${c.component}-${p.name}`;
+    const input = el('input', {
+      type: 'text', id, class: 'param-input', inputmode: 'decimal', spellcheck: 'false', autocomplete: 'off',
+      'aria-describedby': `${id}-meta`,
+    });
+    const [reflectText, reflectTitle] = REFLECTION[p.reflection] ?? [p.reflection, ''];
+    const pendingTag = el('span', { class: 'pending-tag', hidden: true });
+    const error = el('div', { class: 'param-error', role: 'alert', hidden: true });
+    const node = el('div', { class: 'param', dataset: { component: c.component, name: p.name, reflection: p.reflection } },
+      el('label', { class: 'param-name', for: id, title: p.description }, p.name),
+      input,
+      el('span', { class: 'param-unit' }, unitText(p.unit)),
+      el('div', { class: 'param-meta', id: `${id}-meta` },
+        el('span', { class: 'param-range', title: p.type === 'int' ? 'whole numbers' : 'real numbers' }, `${p.type} ${p.range}`),
+        el('span', { class: 'param-reflection', title: reflectTitle }, reflectText),
+        pendingTag),
+      error);
+    const row = { node, input, pendingTag, error, component: c.component, name: p.name };
+    input.addEventListener('change', () => send(row, input.value.trim()));
+    input.addEventListener('keydown', (e) => {
+      if (e.key === 'Escape') {
+        input.value = show(held.get(`${c.component}/${p.name}`)?.value);
+        input.blur();
+      }
+    });
+    group.list.append(node);
+    rows.set(`${c.component}/${p.name}`, row);
+    return row;
+  }
+
+  function makeGroup(c) {
+    const count = el('span', { class: 'group-count' });
+    const list = el('div', { class: 'param-list' });
+    const details = el('details', { class: 'param-group', open: true, dataset: { component: c.component } },
+      el('summary', {}, el('span', { class: 'group-name' }, c.component), count),
+      list);
+    body.append(details);
+    const group = { details, list, count };
+    groups.set(c.component, group);
+    if (c.component === 'MotorControl') group.pd = makePdForm(details);
+    return group;
+  }
+
+  // ---------------------------------------------------------------- SetPDGain
+  function makePdForm(details) {
+    const inputs = new Map();
+    const error = el('div', { class: 'param-error', role: 'alert', hidden: true });
+    const fields = PD_GAINS.map(([name, label]) => {
+      const input = el('input', { type: 'text', inputmode: 'decimal', id: `pd-${name}`, class: 'param-input', autocomplete: 'off', spellcheck: 'false' });
+      inputs.set(name, input);
+      return el('label', { class: 'pd-field' }, el('span', {}, label), input);
+    });
+    const number = (t) => (t.trim() === '' ? Number.NaN : Number(t));
+    const form = el('form', { class: 'pd-form', id: 'pd-form', title: 'Motor::SetPDGain (002 §5.2.2): all four gains in one service call' },
+      el('div', { class: 'pd-title' }, 'Service Motor::SetPDGain'),
+      el('div', { class: 'pd-fields' }, ...fields,
+        el('button', { type: 'submit', id: 'pd-send' }, 'SetPDGain')),
+      error);
+    form.addEventListener('submit', (e) => {
+      e.preventDefault();
+      const [pl, pr, dl, dr] = PD_GAINS.map(([n]) => number(inputs.get(n).value));
+      const r = app.attempt(() => demo.set_pd_gain(pl, pr, dl, dr));
+      if (!r.ok) {
+        error.textContent = r.error;
+        error.hidden = false;
+        app.log.page(`SetPDGain refused: ${r.error}`, 'warn');
+        for (const [n, input] of inputs) input.value = show(held.get(`MotorControl/${n}`)?.value);
+      } else {
+        error.hidden = true;
+        app.log.page(`SetPDGain(${pl}, ${pr}, ${dl}, ${dr})`, 'info');
+      }
+      dirty = true;
+      refresh();
+      app.emit('changed');
+    });
+    details.querySelector('summary').after(form);
+    return inputs;
+  }
+
+  // ---------------------------------------------------------------- refresh
+
+  function refresh() {
+    const r = app.attempt(() => demo.params_json());
+    if (!r.ok || r.value === undefined) return;
+    dirty = false;
+    if (r.value === last) return;
+    last = r.value;
+    const components = JSON.parse(r.value);
+    held.clear();
+    for (const c of components) {
+      const group = groups.get(c.component) ?? makeGroup(c);
+      let pending = 0;
+      for (const p of c.params) {
+        const key = `${c.component}/${p.name}`;
+        held.set(key, p);
+        const row = rows.get(key) ?? makeRow(group, c, p);
+        if (document.activeElement !== row.input) row.input.value = show(p.value);
+        const d = row.node.dataset;
+        d.value = show(p.value);
+        d.effective = show(p.effective);
+        d.pending = String(Boolean(p.pending));
+        row.node.classList.toggle('pending', Boolean(p.pending));
+        row.pendingTag.hidden = !p.pending;
+        setText(row.pendingTag, p.pending ? `pending (next activation) · in use: ${show(p.effective)}` : '');
+        row.node.classList.toggle('changed', p.value !== p.default);
+        row.node.title = p.value !== p.default ? `default ${show(p.default)}` : '';
+        if (p.pending) pending++;
+      }
+      setText(group.count, `${c.params.length} parameters${pending ? ` · ${pending} pending` : ''}`);
+      if (group.pd) {
+        for (const [n, input] of group.pd) {
+          if (document.activeElement !== input) input.value = show(held.get(`MotorControl/${n}`)?.value);
+        }
+      }
+    }
+  }
+
+  app.on('loaded', () => {
+    dirty = true;
+    say('', 'info');
+    for (const row of rows.values()) {
+      row.error.hidden = true;
+      row.node.classList.remove('refused');
+    }
+  });
+  app.on('changed', () => { dirty = true; });
+  app.on('tab', (name) => { if (name === 'params') dirty = true; });
+
+  return {
+    /** Called every frame: reads the parameters when something changed, else twice a second. */
+    update(now, visible) {
+      if (!visible) return;
+      if (dirty || now - lastPoll >= POLL_MS) {
+        lastPoll = now;
+        refresh();
+      }
+    },
+    refresh,
+  };
+}
