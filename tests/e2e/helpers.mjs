@@ -48,8 +48,9 @@ export async function launch() {
  * A fresh page at `URL + query`, loaded and ready; `problems` collects page errors and
  * console errors.
  */
-export async function openPage(context, query = '') {
+export async function openPage(context, query = '', { init } = {}) {
   const page = await context.newPage();
+  if (init) await page.addInitScript(init);
   const problems = [];
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   page.on('console', (m) => {

@@ -252,8 +252,6 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   // The lesson is shown beside the scenario.
   assert.match(await page.textContent('#about-lesson'), /^Try this \S/);
   assert.equal(await page.isVisible('#about-lesson'), true);
-  const SIZE = [800, 500];
-  await page.evaluate((s) => window.rtnav.setFrameSize(...s), SIZE);
   // Edits: a 3×3 block of obstacle cells on the path, two parameters.
   const { local_path: path } = await plan(page);
   const at = path[Math.floor(path.length * 0.6)];
@@ -266,35 +264,46 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   await shown(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 40);
   await setParam(page, 'DriveControl', 'MaxVelocity', 0.3);
   await shown(page, 'DriveControl', 'MaxVelocity', 0.3);
-  // The caption carries the simulated time: left out of the comparison.
-  await page.click('#layers summary');
-  await page.uncheck('#layer-caption');
-  await page.click('#layers summary');
+  // The clock is paused, so the frame stays the set-up's first one (its caption carries the
+  // simulated time); making the link restarts the set-up from it while the robot stands.
+  await page.click('#pause');
+  await page.waitForFunction(() => window.rtnav.demo.paused(), null, WAIT);
   await page.click('#share-copy');
   await page.waitForSelector('#share-link:not([hidden])', WAIT);
   const link = await page.inputValue('#share-link');
-  // The frame of the page that made the link (the robot has not started).
-  await frames(page, 3);
-  const frame = await canvasHash(page);
   const list = await params(page);
   const planned = await plan(page);
-  const token = await page.evaluate(() => window.rtnav.demo.share_token());
+  const token = new URL(link).searchParams.get('share');
   assert.equal(link, `${new URL(page.url()).origin}${new URL(page.url()).pathname}?share=${token}`);
   assert.match(token, /^[A-Za-z0-9_-]+$/, 'URL-safe');
 
-  const { page: other, problems: otherProblems } = await open(new URL(link).search);
+  // The fresh page keeps a copy of the first frame it puts on the canvas.
+  const { page: other, problems: otherProblems } = await openPage(browser.context, new URL(link).search, {
+    init: () => {
+      const put = CanvasRenderingContext2D.prototype.putImageData;
+      CanvasRenderingContext2D.prototype.putImageData = function (image, ...rest) {
+        if (!window.__firstFrame && this.canvas.id === 'view') {
+          window.__firstFrame = { width: image.width, height: image.height, data: new Uint8ClampedArray(image.data) };
+        }
+        return put.call(this, image, ...rest);
+      };
+    },
+  });
   assert.equal(await other.inputValue('#scenario'), 'open_field');
   assert.equal(await other.evaluate(([x, y]) => window.rtnav.demo.cell(x, y), at), 1, 'the painted cells');
   assert.deepEqual(await params(other), list, 'the same parameters');
   const otherPlan = await plan(other);
   assert.deepEqual([otherPlan.start, otherPlan.goal, otherPlan.direction], [planned.start, planned.goal, planned.direction]);
   assert.equal((await json(other, 'telemetry_json')).driving, false, 'the robot has not started');
-  await other.evaluate((s) => window.rtnav.setFrameSize(...s), SIZE);
-  await other.click('#layers summary');
-  await other.uncheck('#layer-caption');
-  await other.click('#layers summary');
-  await frames(other, 3);
-  assert.deepEqual(await canvasHash(other), frame, 'the same first frame, byte for byte');
+  const first = await other.evaluate(async () => {
+    const f = window.__firstFrame;
+    const h = new Uint8Array(await crypto.subtle.digest('SHA-256', f.data));
+    return { width: f.width, height: f.height, sha256: Array.from(h, (b) => b.toString(16).padStart(2, '0')).join('') };
+  });
+  // The page that made the link, still paused at its set-up, drawn at the same size.
+  await page.evaluate(([w, h]) => window.rtnav.setFrameSize(w, h), [first.width, first.height]);
+  await frames(page, 3);
+  assert.deepEqual(await canvasHash(page), first, 'the same first frame, byte for byte (caption and all)');
   assert.deepEqual(otherProblems, []);
   await other.close();
 

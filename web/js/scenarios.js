@@ -92,6 +92,9 @@ export function createScenarios(dom, app) {
     }
     current = name;
     dom.select.value = name;
+    // The set-up is drawn at once, before the clock runs a tick: the first frame of a load
+    // (and of a share link) is the set-up at its own time.
+    app.stage.draw();
     loaded(share === null
       ? `Scenario ${name} loaded. Press Activate all to drive.`
       : `Shared set-up of scenario ${name} loaded (its start, goal, map edits and parameters). Press Activate all to drive.`);

@@ -23,6 +23,7 @@ export function createShare(root, canvas, app) {
     // While the robot stands, making the link restarts the set-up from it (what the link
     // opens with): the panels read the system again.
     app.emit('changed');
+    app.stage.draw();
     const url = `${location.origin}${location.pathname}?share=${r.value}`;
     link.value = url;
     link.hidden = false;
