@@ -168,6 +168,12 @@ fn posture_consideration_changes_the_next_plan_at_once() {
 #[test]
 fn an_on_activation_parameter_waits_for_the_next_activation() {
     let mut s = loaded("open_field");
+    let pending: Vec<&str> = s
+        .parameters_view()
+        .iter()
+        .flat_map(|c| c.params.iter().filter(|p| p.pending).map(|p| p.name))
+        .collect();
+    assert!(pending.is_empty(), "nothing waits after a load: {pending:?}");
     s.activate_all();
     s.advance(50.0);
     s.set_param(ComponentKind::MotorControl, "lengthOfAxle", "0.5")

@@ -210,6 +210,8 @@ impl System {
         motor
             .config_mut()
             .set("SimulatedOffsetAngle", frame.offset_angle)?;
+        // The robot model's own values, not a change waiting for an activation.
+        motor.config_mut().apply_on_activation();
         let mut localization = Localization::new(ComponentKind::Localization.instance_name());
         let mut global = GlobalPathPlanning::new(ComponentKind::GlobalPathPlanning.instance_name());
         let mut local = LocalPathPlanning::new(ComponentKind::LocalPathPlanning.instance_name());
