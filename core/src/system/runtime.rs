@@ -459,15 +459,27 @@ impl System {
                 },
             },
             ComponentKind::LocalPathPlanning => {
+                // The held flags of 000 §5.2.4, the ones that are set, and the plans made.
                 let f = self.local_path_planning().flags();
+                let held: Vec<&str> = [
+                    (f.map, "map"),
+                    (f.position, "start and goal"),
+                    (f.path, "path"),
+                    (f.arrived, "arrived"),
+                    (f.safe_mode, "SafeMode"),
+                ]
+                .into_iter()
+                .filter_map(|(on, name)| on.then_some(name))
+                .collect();
+                let plans = self.local_path_planning().plan_count();
                 format!(
-                    "map {} position {} path {} arrived {} safe mode {}; {} plans",
-                    f.map,
-                    f.position,
-                    f.path,
-                    f.arrived,
-                    f.safe_mode,
-                    self.local_path_planning().plan_count()
+                    "holds: {}; {plans} plan{}",
+                    if held.is_empty() {
+                        "nothing".to_owned()
+                    } else {
+                        held.join(", ")
+                    },
+                    if plans == 1 { "" } else { "s" }
                 )
             }
             ComponentKind::DriveControl => self.drive_control().status().to_string(),
