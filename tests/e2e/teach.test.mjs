@@ -178,7 +178,7 @@ test('PGainL while driving changes the torques and their plot; lengthOfAxle wait
   assert.equal(await page.isVisible(`${row('MotorControl', 'lengthOfAxle')} .pending-tag`), false);
   await showTab(page, 'plots');
   await page.waitForTimeout(300);
-  await screenshot(page, 'teach-plots.png', { docs: false });
+  await screenshot(page, 'teach-plots.png');
   assert.deepEqual(problems, []);
   await page.close();
 });
