@@ -173,7 +173,10 @@ fn an_on_activation_parameter_waits_for_the_next_activation() {
         .iter()
         .flat_map(|c| c.params.iter().filter(|p| p.pending).map(|p| p.name))
         .collect();
-    assert!(pending.is_empty(), "nothing waits after a load: {pending:?}");
+    assert!(
+        pending.is_empty(),
+        "nothing waits after a load: {pending:?}"
+    );
     s.activate_all();
     s.advance(50.0);
     s.set_param(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
