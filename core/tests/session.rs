@@ -76,7 +76,7 @@ fn a_share_token_reproduces_the_set_up_and_the_first_frame() {
             .all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b'_')
     );
     let setup = a.setup().unwrap();
-    assert_eq!(setup.edits, vec![[12, 6, 1], [12, 7, 1], [13, 6, 1]]);
+    assert_eq!(setup.edits, vec![(12, 6, 1), (12, 7, 1), (13, 6, 1)]);
     assert_eq!(
         setup.params["LocalPathPlanning"]["PostureConsiderationLevel"],
         20.0

@@ -12,7 +12,7 @@ impl Demo {
     /// Every parameter of LocalPathPlanning, MotorControl, DriveControl and PhysicsSim as
     /// JSON `[{component, instance_name, params: [{name, type, unit, default, min, max,
     /// range, reflection, description, value, effective, pending}]}]`.
-    pub fn params_json(&mut self) -> Result<String, JsError> {
+    pub fn params_json(&self) -> Result<String, JsError> {
         json(&self.0.session.parameters_view())
     }
 

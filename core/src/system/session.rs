@@ -88,7 +88,7 @@ pub struct Setup {
     /// Driving backward.
     pub backward: bool,
     /// Map cells edited since the load: `[x, y, value]`, in (x, y) order.
-    pub edits: Vec<[i64; 3]>,
+    pub edits: Vec<(i64, i64, i16)>,
     /// Parameters that differ from the scenario's: component → name → value.
     pub params: BTreeMap<String, BTreeMap<String, f64>>,
 }
@@ -182,11 +182,28 @@ pub struct Session {
     clock: Clock,
     source: Source,
     /// The parameters as loaded (a set-up records the differences).
-    baseline: BTreeMap<(ComponentKind, String), f64>,
+    baseline: Parameters,
     /// Cells edited since the load → their last value.
     edits: BTreeMap<(i64, i64), i16>,
     /// The map's file name (the scenario's map file, or the file picked).
     map_name: String,
+}
+
+/// Every [`TUNABLE`] parameter's requested value, by component and name.
+type Parameters = BTreeMap<(ComponentKind, String), f64>;
+
+fn parameters_of(system: &System) -> Parameters {
+    let mut out = BTreeMap::new();
+    for kind in TUNABLE {
+        if let Ok(config) = system.config(kind) {
+            for spec in config.specs() {
+                if let Ok(v) = config.value(spec.name) {
+                    out.insert((kind, spec.name.to_owned()), v);
+                }
+            }
+        }
+    }
+    out
 }
 
 fn encoded(p: Pose) -> [f64; 3] {
@@ -274,13 +291,14 @@ impl Session {
             edits: Vec::new(),
             params: BTreeMap::new(),
         };
-        let system = Self::build(&scenario, &files, &setup)?;
+        let (system, baseline) = Self::build(&scenario, &files, &setup)?;
         self.map_name = match &scenario.map {
             MapSource::Json { path } | MapSource::Movingai { path, .. } => path.clone(),
             MapSource::Ros { yaml, .. } => yaml.clone(),
         };
         self.install(
             system,
+            baseline,
             Source::Scenario {
                 scenario: Box::new(scenario),
                 files,
@@ -308,27 +326,34 @@ impl Session {
             system.activate(kind)?;
         }
         self.map_name = name.to_owned();
-        self.install(system, Source::MapFile);
+        let baseline = parameters_of(&system);
+        self.install(system, baseline, Source::MapFile);
         Ok(())
     }
 
-    fn install(&mut self, system: System, source: Source) {
+    fn install(&mut self, system: System, baseline: Parameters, source: Source) {
         self.system = system;
         self.source = source;
         self.clock.pending_ns = 0;
         self.edits.clear();
-        self.baseline = self.parameters();
+        self.baseline = baseline;
     }
 
     /// The system of `scenario` with `setup` replayed (see the module documentation): the
-    /// one function both a fresh load and a shared link go through.
-    fn build(scenario: &Scenario, files: &MemoryResolver, setup: &Setup) -> crate::Result<System> {
+    /// one function both a fresh load and a shared link go through. Also returns the
+    /// scenario's own parameters (before the set-up's), which a set-up is measured against.
+    fn build(
+        scenario: &Scenario,
+        files: &MemoryResolver,
+        setup: &Setup,
+    ) -> crate::Result<(System, Parameters)> {
         let timeless = Scenario {
             events: Vec::new(),
             ..scenario.clone()
         };
         let mut system = System::from_scenario(&timeless, files)?;
         system.set_full_field(true);
+        let baseline = parameters_of(&system);
         for (component, params) in &setup.params {
             let kind = ComponentKind::from_name(component)?;
             let config = system.config_mut(kind)?;
@@ -337,18 +362,7 @@ impl Session {
             }
         }
         if !setup.edits.is_empty() {
-            let cells: Vec<(i64, i64, i16)> = setup
-                .edits
-                .iter()
-                .map(|&[x, y, v]| {
-                    (
-                        x,
-                        y,
-                        v.clamp(i64::from(i16::MIN), i64::from(i16::MAX)) as i16,
-                    )
-                })
-                .collect();
-            system.map_update(MapUpdate::from_cells(&cells, Time::default()))?;
+            system.map_update(MapUpdate::from_cells(&setup.edits, Time::default()))?;
         }
         if let (Some(start), Some(goal)) = (setup.start, setup.goal) {
             system.set_position(decoded(start), decoded(goal), direction_of(setup.backward))?;
@@ -360,29 +374,14 @@ impl Session {
                 reason: format!("preview: {e}"),
             })?;
         system.set_drive_script(&scenario.events);
-        Ok(system)
+        Ok((system, baseline))
     }
 
     // ------------------------------------------------------------------ set-up and sharing
 
-    /// Every tunable parameter's requested value.
-    fn parameters(&mut self) -> BTreeMap<(ComponentKind, String), f64> {
-        let mut out = BTreeMap::new();
-        for kind in TUNABLE {
-            if let Ok(config) = self.system.config_mut(kind) {
-                for spec in config.specs() {
-                    if let Ok(v) = config.value(spec.name) {
-                        out.insert((kind, spec.name.to_owned()), v);
-                    }
-                }
-            }
-        }
-        out
-    }
-
     /// The current set-up (see [`Setup`]). An error when the map did not come from a
     /// scenario (a link cannot carry a whole map file).
-    pub fn setup(&mut self) -> crate::Result<Setup> {
+    pub fn setup(&self) -> crate::Result<Setup> {
         let name = match &self.source {
             Source::Scenario { scenario, .. } => scenario.name.clone(),
             _ => {
@@ -392,7 +391,7 @@ impl Session {
             }
         };
         let mut params: BTreeMap<String, BTreeMap<String, f64>> = BTreeMap::new();
-        for ((kind, pname), value) in self.parameters() {
+        for ((kind, pname), value) in parameters_of(&self.system) {
             let same = self
                 .baseline
                 .get(&(kind, pname.clone()))
@@ -411,11 +410,7 @@ impl Session {
             start: s.start().map(encoded),
             goal: s.goal().map(encoded),
             backward: s.direction() == Direction::Backward,
-            edits: self
-                .edits
-                .iter()
-                .map(|(&(x, y), &v)| [x, y, i64::from(v)])
-                .collect(),
+            edits: self.edits.iter().map(|(&(x, y), &v)| (x, y, v)).collect(),
             params,
         })
     }
@@ -479,33 +474,11 @@ impl Session {
                 setup.scenario, scenario.name
             )));
         }
-        let baseline = Self::build(
-            scenario,
-            files,
-            &Setup {
-                start: None,
-                goal: None,
-                edits: Vec::new(),
-                params: BTreeMap::new(),
-                ..setup.clone()
-            },
-        )?;
-        let system = Self::build(scenario, files, setup)?;
-        // The baseline is the scenario's own parameters (not the set-up's).
-        self.system = baseline;
-        self.baseline = self.parameters();
+        let (system, baseline) = Self::build(scenario, files, setup)?;
         self.system = system;
+        self.baseline = baseline;
         self.clock.pending_ns = 0;
-        self.edits = setup
-            .edits
-            .iter()
-            .map(|&[x, y, v]| {
-                (
-                    (x, y),
-                    v.clamp(i64::from(i16::MIN), i64::from(i16::MAX)) as i16,
-                )
-            })
-            .collect();
+        self.edits = setup.edits.iter().map(|&(x, y, v)| ((x, y), v)).collect();
         Ok(())
     }
 
@@ -723,10 +696,10 @@ impl Session {
     }
 
     /// Every parameter of the [`TUNABLE`] components, as the parameter panel lists them.
-    pub fn parameters_view(&mut self) -> Vec<ComponentParameters> {
+    pub fn parameters_view(&self) -> Vec<ComponentParameters> {
         let mut out = Vec::new();
         for kind in TUNABLE {
-            let Ok(config) = self.system.config_mut(kind) else {
+            let Ok(config) = self.system.config(kind) else {
                 continue;
             };
             let params = config
@@ -770,7 +743,14 @@ impl Session {
             deviatinglen: s.local_path_planning().params().deviatinglen,
             ..PlotWindow::default()
         };
-        for sample in s.telemetry().samples().iter().filter(|x| x.time_ns >= from) {
+        // The window is at the end of a long history: find its start from the back.
+        let samples = s.telemetry().samples();
+        let inside = samples
+            .iter()
+            .rev()
+            .take_while(|x| x.time_ns >= from)
+            .count();
+        for sample in samples.iter().skip(samples.len() - inside) {
             w.t.push(sample.time_ns as f64 * 1e-9);
             w.target_rate_l.push(sample.target_wheel_rate[0]);
             w.target_rate_r.push(sample.target_wheel_rate[1]);
