@@ -219,6 +219,10 @@ impl Component for DriveControl {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
         self.pursuit = PurePursuit::new();
         self.pose = None;

@@ -213,6 +213,10 @@ impl Component for GlobalPathPlanning {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     /// Plans a pending request and sends the path or the failure.
     fn on_execute(&mut self, tick: &Tick) -> ReturnCode {
         let Some((start, goal)) = self.request.take() else {

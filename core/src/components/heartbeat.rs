@@ -78,6 +78,10 @@ impl Component for Heartbeat {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     /// A new activation starts a new beat period.
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
         self.since_beat = 0;

@@ -747,6 +747,10 @@ impl Component for LocalPathPlanning {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     /// 000 §5.2.3: initialisation. Stale port data is dropped and a pending replan request
     /// cleared. **Decision**: what the services delivered (map, start/goal, path) is kept,
     /// since in rtnav they may be called before activation.

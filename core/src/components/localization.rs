@@ -215,6 +215,10 @@ impl Component for Localization {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     /// Locks the odometry geometry and restarts odometry at the start pose.
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
         let p = *self.config.params();

@@ -606,6 +606,10 @@ impl Component for MotorControl {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     /// 002 §5.2.3: (1) every held value and flag off; (2) the `on_activation` parameters
     /// copied and locked; (3) stale data dropped from the in-ports. Equal wheel ids fail the
     /// activation (→ Error, with the reason).

@@ -271,6 +271,10 @@ impl Component for PhysicsSim {
         Some(&mut self.config)
     }
 
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        Some(&self.config)
+    }
+
     /// Checks the period and starts the simulated clock at the activation time.
     fn on_activated(&mut self, tick: &Tick) -> ReturnCode {
         Self::steps(tick).map_err(|e| ComponentError::from(crate::Error::from(e)))?;

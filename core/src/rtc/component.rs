@@ -88,6 +88,11 @@ pub trait Component: Any {
         None
     }
 
+    /// The same configuration, to read (the GUI's parameter panel, `.conf` export).
+    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
+        None
+    }
+
     /// Once, when the component is created.
     fn on_initialize(&mut self) -> ReturnCode {
         Ok(())

@@ -250,6 +250,16 @@ impl ExecutionContext {
     }
 
     /// The component as a trait object (e.g. for its configuration).
+    pub fn component_dyn(&self, id: ComponentId) -> Result<&dyn Component, LifecycleError> {
+        Ok(self
+            .slots
+            .get(id)
+            .ok_or(LifecycleError::UnknownComponent { id })?
+            .component
+            .as_ref())
+    }
+
+    /// The component as a mutable trait object (e.g. for its configuration).
     pub fn component_dyn_mut(
         &mut self,
         id: ComponentId,

@@ -110,19 +110,12 @@ impl System {
     /// parameters"); the read-only twin of [`System::config_mut`]. MapBuilder and
     /// MapMaintenance have none.
     pub fn config(&self, kind: ComponentKind) -> crate::Result<&dyn ConfigAccess> {
-        Ok(match kind {
-            ComponentKind::PhysicsSim => self.physics().config(),
-            ComponentKind::MotorControl => self.motor_control().config(),
-            ComponentKind::Localization => self.localization().config(),
-            ComponentKind::GlobalPathPlanning => self.global_path_planning().config(),
-            ComponentKind::LocalPathPlanning => self.local_path_planning().config(),
-            ComponentKind::DriveControl => self.drive_control().config(),
-            ComponentKind::MapBuilder | ComponentKind::MapMaintenance => {
-                return Err(SystemError::NoConfiguration {
-                    component: kind.name().to_owned(),
-                }
-                .into());
+        let c = self.execution_context().component_dyn(kind.index())?;
+        c.configuration_ref().ok_or_else(|| {
+            SystemError::NoConfiguration {
+                component: kind.name().to_owned(),
             }
+            .into()
         })
     }
 
