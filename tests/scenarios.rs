@@ -12,9 +12,13 @@
 //! asserted. Build with `--release` for representative figures.
 
 use rtnav::interfaces::Pose;
+use rtnav::map::Cell;
 use rtnav::motion::angle_diff;
+use rtnav::rtc::LifecycleState;
+use rtnav::system::setup::{self, BuildOptions, Setup};
 use rtnav::system::{
-    EventKind, MemoryResolver, OutcomeKind, Scenario, ScenarioReport, ScenarioRun, SystemEvent,
+    EventKind, Input, MemoryResolver, OutcomeKind, Scenario, ScenarioReport, ScenarioRun,
+    SystemEvent,
 };
 
 /// The willow garage map, read in place from the shared data (`../shared/data`).
@@ -108,7 +112,13 @@ struct Run {
 
 impl Run {
     fn events(&self) -> Vec<SystemEvent> {
-        self.run.system().events().iter().cloned().collect()
+        self.run
+            .system()
+            .record()
+            .events()
+            .iter()
+            .cloned()
+            .collect()
     }
 }
 
@@ -130,7 +140,7 @@ fn check((name, json, golden): (&str, &str, &str)) -> Run {
     for _ in 0..RUNS {
         let mut run = ScenarioRun::new(&scenario, &files).unwrap();
         let t0 = now_ms();
-        run.run_to_end().unwrap();
+        run.run_to_end();
         best = best.min((now_ms() - t0) * 1e-3);
         runs.push(run);
     }
@@ -216,29 +226,62 @@ fn parking_wall_arrives_parallel_to_the_wall() {
 fn appearing_obstacle_is_avoided_after_a_replan() {
     let r = check(scenario!("appearing_obstacle"));
     let events = r.events();
+    let system = r.run.system();
+    // The timeline counts from the start of the drive: the physics' activation.
+    let drive = events
+        .iter()
+        .find(|e| {
+            matches!(&e.kind, EventKind::StateChanged { component, to: LifecycleState::Active, .. }
+                if component == "PhysicsSim0")
+        })
+        .expect("the drive starts")
+        .time_ns;
     let update = events
         .iter()
         .find(|e| matches!(e.kind, EventKind::MapUpdated { changed, .. } if changed > 0))
         .expect("the trolley appears");
-    assert_eq!(update.time_ns, 6_000_000_000, "at the scenario's time");
+    assert_eq!(
+        update.time_ns - drive,
+        6_000_000_000,
+        "at the scenario's time"
+    );
     assert!(
         events.iter().any(|e| e.time_ns > update.time_ns
             && matches!(e.kind, EventKind::LocalPlanSent { replanned: true, cells, .. } if cells > 0)),
         "a local plan around the trolley is sent after it appears"
     );
-    // The global route ran through the trolley: avoiding it needed the replan.
-    let map = r.run.system().map().unwrap();
-    let through = r
-        .run
-        .system()
-        .global_path()
-        .iter()
-        .any(|&c| map.is_obstacle(c.0 as i64, c.1 as i64));
-    assert!(through, "the global route crosses the trolley's cells");
+    // The route planned before the trolley appeared ran through it: avoiding it needed a
+    // replan.
+    let scenario = r.run.scenario();
+    let Input::MapUpdate { cells: trolley } = scenario.events[0].to_input(system.map()) else {
+        panic!("the scenario's event is the trolley's MapUpdate");
+    };
+    let crosses = |route: &[Cell]| {
+        route.iter().any(|c| {
+            trolley
+                .iter()
+                .any(|t| (t.0, t.1) == (c.0 as i64, c.1 as i64))
+        })
+    };
+    let set_up = setup::build(
+        scenario,
+        &resolver(),
+        &Setup::of(scenario),
+        BuildOptions::default(),
+    )
+    .unwrap();
+    assert!(
+        crosses(set_up.mission().route()),
+        "the first global route crosses the trolley's cells"
+    );
+    // Spec §5 Decision 0.2: GlobalPathPlanning plans again when an update blocks its route,
+    // so the route held beyond the local target no longer runs through the trolley.
+    assert!(events.iter().any(|e| e.time_ns >= update.time_ns
+        && matches!(&e.kind, EventKind::GlobalPlan { reason, .. } if reason == "MapChanged")));
+    assert!(!crosses(system.mission().route()));
     // The robot passed it on the north side, its body clear of the trolley (y ≤ 4.3 m).
-    let beside: Vec<_> = r
-        .run
-        .system()
+    let beside: Vec<_> = system
+        .record()
         .trail()
         .iter()
         .filter(|p| (12.0..=12.8).contains(&p.0))
@@ -256,7 +299,7 @@ fn appearing_obstacle_is_avoided_after_a_replan() {
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn backward_dock_reverses_in_without_turning() {
     let r = check(scenario!("backward_dock"));
-    let samples = r.run.system().telemetry().samples();
+    let samples = r.run.system().record().telemetry().samples();
     assert_eq!(samples.len() as u64, r.report.samples, "every sample kept");
     assert!(
         samples.iter().all(|s| s.v_cmd <= 0.0),
@@ -289,7 +332,7 @@ fn unreachable_goal_fails_to_plan_and_the_robot_stands_still() {
     assert_eq!(r.report.path_length, 0.0);
     let start = Pose::new(1.5, 1.5, 0.0);
     assert_eq!(r.report.final_pose, start, "the robot did not move at all");
-    let samples = r.run.system().telemetry().samples();
+    let samples = r.run.system().record().telemetry().samples();
     assert!(
         samples
             .iter()

@@ -5,7 +5,7 @@
 //! `cargo bench -p rtnav --bench distance -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use rtnav::map::GridMap;
+use rtnav::map::{GridMap, MapUpdate};
 use rtnav::rtc::Time;
 use std::hint::black_box;
 
@@ -56,8 +56,14 @@ fn bench(c: &mut Criterion) {
             flip = 1 - flip;
             let vs = vec![flip; xs.len()];
             black_box(
-                m.map_update(&xs, &ys, &vs, xs.len() as i32, Time::default())
-                    .unwrap(),
+                m.map_update(&MapUpdate {
+                    x: xs.to_vec(),
+                    y: ys.to_vec(),
+                    value: vs.to_vec(),
+                    num: xs.len() as i32,
+                    tm: Time::default(),
+                })
+                .unwrap(),
             )
         })
     });
@@ -67,8 +73,14 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             flip = 1 - flip;
             black_box(
-                m.map_update(&[321], &[654], &[flip], 1, Time::default())
-                    .unwrap(),
+                m.map_update(&MapUpdate {
+                    x: vec![321],
+                    y: vec![654],
+                    value: vec![flip],
+                    num: 1,
+                    tm: Time::default(),
+                })
+                .unwrap(),
             )
         })
     });

@@ -10,7 +10,7 @@ use rtnav::local::{
     PotentialField, TARGET_POTENTIAL, control_points, corner_cells, descend, find_local_target,
     merge_paths, nearest_path_index, step_length, thin_collinear,
 };
-use rtnav::map::{Cell, GridMap};
+use rtnav::map::{Cell, GridMap, MapUpdate};
 
 /// A map from rows drawn top (largest y) first: `#` obstacle, anything else free.
 fn ascii(rows: &[&str], g: f64) -> GridMap {
@@ -703,8 +703,14 @@ fn s5_2_4_8_a_blocked_target_moves_on_along_the_path() {
     let path = l_path();
     let goal = Pose::new(6.25, 3.25, 1.0);
     // Block (8, 2), the target by distance.
-    map.map_update(&[8], &[2], &[1], 1, Default::default())
-        .unwrap();
+    map.map_update(&MapUpdate {
+        x: vec![8],
+        y: vec![2],
+        value: vec![1],
+        num: 1,
+        tm: Default::default(),
+    })
+    .unwrap();
     let t = find_local_target(
         &map,
         &path,
@@ -731,8 +737,14 @@ fn s5_2_4_8_a_blocked_target_moves_on_along_the_path() {
     .unwrap();
     assert_eq!((t.index, t.cell), (8, (10, 2)));
     // Block the goal: nothing left.
-    map.map_update(&[12], &[6], &[1], 1, Default::default())
-        .unwrap();
+    map.map_update(&MapUpdate {
+        x: vec![12],
+        y: vec![6],
+        value: vec![1],
+        num: 1,
+        tm: Default::default(),
+    })
+    .unwrap();
     assert_eq!(
         find_local_target(
             &map,

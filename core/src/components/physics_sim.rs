@@ -20,7 +20,7 @@
 use crate::define_parameters;
 use crate::errors::MotionError;
 use crate::interfaces::Pose;
-use crate::map::GridMap;
+use crate::map::{GridMap, MapUpdate};
 use crate::motion::{
     BumpReport, DEFAULT_MASS, DEFAULT_MAX_TORQUE, DEFAULT_VISCOUS_FRICTION, DEFAULT_YAW_INERTIA,
     Physics, PhysicsParams, STEP_NS,
@@ -168,16 +168,9 @@ impl PhysicsSim {
         self.physics.set_map(map);
     }
 
-    /// `MapUpdate` on the held map (atomic; SPEC §2).
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        tm: Time,
-    ) -> crate::Result<usize> {
-        self.physics.map_update(x, y, value, num, tm)
+    /// `MapUpdate` on the held map (atomic; spec §2).
+    pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
+        self.physics.map_update(update)
     }
 
     /// The torque being applied (the newest valid input; zero after a bad one) \[N·m\].

@@ -5,6 +5,9 @@
 //! costs ([`OctileCost`]) and no corner cutting. The RT-component around them is
 //! [`GlobalPathPlanning`](crate::components::GlobalPathPlanning).
 
+mod error;
+pub use error::GlobalPlanningError;
+
 mod astar;
 mod cost;
 mod heap;

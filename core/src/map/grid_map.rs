@@ -2,7 +2,7 @@
 //! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (SPEC §2).
 
 use super::distance::DistanceField;
-use crate::errors::MapError;
+use super::{MapError, MapUpdate};
 use crate::rtc::Time;
 
 /// The largest map accepted: 16 Mi cells (a 4096 × 4096 map), so a bad header gives a clear
@@ -242,44 +242,12 @@ impl GridMap {
         !within_dmin(self.obstacle_distance(cell), dmin)
     }
 
-    /// `MapUpdate(X, Y, value, num, sec, nsec)` (000 §3.2.2.1 (5), SPEC §2 Decision): all
-    /// or nothing. Returns the number of cells whose value changed.
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        tm: Time,
-    ) -> Result<usize, MapError> {
-        for (array, len) in [("X", x.len()), ("Y", y.len()), ("value", value.len())] {
-            if num < 0 || len != num as usize {
-                return Err(MapError::UpdateLength {
-                    array,
-                    len,
-                    num: i64::from(num),
-                });
-            }
-        }
-        for i in 0..x.len() {
-            let (cx, cy) = (i64::from(x[i]), i64::from(y[i]));
-            if !self.contains(cx, cy) {
-                return Err(MapError::CellOutside {
-                    what: "MapUpdate",
-                    x: cx,
-                    y: cy,
-                    width: self.width,
-                    height: self.height,
-                });
-            }
-            if !(0..=1).contains(&value[i]) {
-                return Err(MapError::BadCellValue {
-                    what: "value",
-                    index: i,
-                    value: i64::from(value[i]),
-                });
-            }
-        }
+    /// `MapUpdate` (000 §3.2.2.1 (5), spec §2 Decision): checked completely first
+    /// ([`MapUpdate::check`]), then applied — all or nothing. Returns the number of cells whose
+    /// value changed; the timestamp becomes the map's version.
+    pub fn map_update(&mut self, update: &MapUpdate) -> Result<usize, MapError> {
+        update.check(self)?;
+        let (x, y, value, tm) = (&update.x, &update.y, &update.value, update.tm);
         // Validated: apply. A cell listed twice takes its last value, as if the entries were
         // applied one after the other; only cells whose value differs afterwards count.
         let mut listed: Vec<(usize, u8)> = x
@@ -367,19 +335,19 @@ mod tests {
         let before = m.clone();
         let tm = Time { sec: 3, nsec: 4 };
         assert!(matches!(
-            m.map_update(&[0, 1], &[0], &[1, 1], 2, tm),
+            m.map_update(&MapUpdate { x: vec![0, 1], y: vec![0], value: vec![1, 1], num: 2, tm: tm }),
             Err(MapError::UpdateLength { array: "Y", .. })
         ));
         assert!(matches!(
-            m.map_update(&[0, 2], &[0, 0], &[1, 1], 2, tm),
+            m.map_update(&MapUpdate { x: vec![0, 2], y: vec![0, 0], value: vec![1, 1], num: 2, tm: tm }),
             Err(MapError::CellOutside { x: 2, .. })
         ));
         assert!(matches!(
-            m.map_update(&[0, 1], &[0, 0], &[1, 2], 2, tm),
+            m.map_update(&MapUpdate { x: vec![0, 1], y: vec![0, 0], value: vec![1, 2], num: 2, tm: tm }),
             Err(MapError::BadCellValue { what: "value", .. })
         ));
         assert_eq!(m, before);
-        assert_eq!(m.map_update(&[0, 1], &[0, 0], &[1, 1], 2, tm), Ok(2));
+        assert_eq!(m.map_update(&MapUpdate { x: vec![0, 1], y: vec![0, 0], value: vec![1, 1], num: 2, tm: tm }), Ok(2));
         assert_eq!(m.version(), tm);
         assert!(m.is_obstacle(1, 0));
         assert_eq!(m.obstacle_distance((0, 1)), 1.0);

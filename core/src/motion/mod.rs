@@ -7,12 +7,17 @@
 //!
 //! Architecture invariant: this module knows nothing of ports, ticks or the lifecycle.
 
+mod error;
+pub use error::MotionError;
+
+mod collision;
 mod diff_drive;
 mod model_frame;
 mod odometry;
 mod physics;
 mod pure_pursuit;
 
+pub use collision::free_travel;
 pub use diff_drive::{DiffDrive, angle_diff, arc_step, wrap_angle};
 pub use model_frame::{ModelFrame, TRANSFORM_LEN};
 pub use odometry::Odometry;

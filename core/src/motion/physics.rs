@@ -21,9 +21,9 @@ use serde::{Deserialize, Serialize};
 
 use super::diff_drive::{DiffDrive, arc_step};
 use super::model_frame::{ModelFrame, TRANSFORM_LEN};
-use crate::errors::{MapError, MotionError};
+use crate::errors::MotionError;
 use crate::interfaces::Pose;
-use crate::map::GridMap;
+use crate::map::{GridMap, MapUpdate};
 use crate::rtc::Time;
 
 /// The fixed physics step: 1 ms (SPEC §5 "Fixed step 1 ms"), in nanoseconds.
@@ -478,23 +478,14 @@ impl Physics {
         self.refresh_touch();
     }
 
-    /// `MapUpdate(X, Y, value, num, tm)` on the held map (SPEC §2, atomic). An obstacle that
-    /// appears on the body gives a bump at the next step.
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        tm: Time,
-    ) -> crate::Result<usize> {
+    /// `MapUpdate` on the held map (spec §2, atomic). An obstacle that appears on the body
+    /// gives a bump at the next step.
+    pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
         let map = self
             .map
             .as_mut()
             .ok_or(MotionError::NoMap { what: "MapUpdate" })?;
-        let changed = map
-            .map_update(x, y, value, num, tm)
-            .map_err(|e: MapError| crate::Error::from(e))?;
+        let changed = map.map_update(update)?;
         self.refresh_touch();
         Ok(changed)
     }

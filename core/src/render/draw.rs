@@ -5,7 +5,7 @@
 
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Stroke, Transform};
 
-use super::raster::Rgba;
+use super::colour::Rgba;
 use super::style;
 
 /// A point in frame pixels.

@@ -18,9 +18,14 @@
 //! feature so native and wasm32 run the same scalar code: a scene gives the same bytes on
 //! both.
 
+mod error;
+pub use error::RenderError;
+
+mod colour;
 mod draw;
 mod font;
 mod frame;
+mod of_system;
 mod panel;
 mod raster;
 mod renderer;
@@ -29,6 +34,7 @@ mod style;
 mod view;
 
 pub use frame::Frame;
+pub use of_system::{FieldBuffers, caption, scene_of};
 pub use renderer::Renderer;
 pub use scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
 pub use view::{MAX_FRAME_SIDE, ViewTransform};

@@ -8,7 +8,7 @@ use crate::errors::SystemError;
 use crate::local::CellState;
 use crate::map;
 
-use super::runtime::System;
+use super::wiring::Wiring;
 
 /// Everything about one map cell, as the inspector shows it (JSON: `{x, y, occupancy,
 /// obstacle_distance, impassable, field}`).
@@ -61,7 +61,7 @@ fn state_name(s: CellState) -> &'static str {
     }
 }
 
-impl System {
+impl Wiring {
     /// What the current map and LocalPathPlanning's latest potential field say about cell
     /// `(x, y)`. Errors: no map loaded, or a cell outside the map (named).
     pub fn inspect_cell(&self, x: i64, y: i64) -> crate::Result<CellInspection> {

@@ -49,6 +49,14 @@ impl ComponentKind {
         Self::LocalPathPlanning,
     ];
 
+    /// The components that hold `dmin`: one value for the system (spec §3 Decision 0.2).
+    pub const DMIN_HOLDERS: [Self; 2] = [Self::LocalPathPlanning, Self::GlobalPathPlanning];
+
+    /// Whether the component holds `dmin` ([`ComponentKind::DMIN_HOLDERS`]).
+    pub fn holds_dmin(self) -> bool {
+        Self::DMIN_HOLDERS.contains(&self)
+    }
+
     /// The component's name as in the seeds and SPEC §0 (e.g. `LocalPathPlanning`).
     pub fn name(self) -> &'static str {
         match self {

@@ -2,7 +2,7 @@
 //! cell (the cell's square, as the physics' bump test uses it; SPEC §5 "touching an obstacle
 //! cell is a bump"), cells outside the map counting as obstacles (SPEC §2).
 
-use crate::map::GridMap;
+use super::GridMap;
 
 /// The squared distance from `(x, y)` to the square with lower-left corner `(lx, ly)` and
 /// side `g`.
