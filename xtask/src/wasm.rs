@@ -4,8 +4,8 @@
 //! Three steps, each a tool we pin:
 //!
 //! 1. `cargo build -p rtnav-wasm --target wasm32-unknown-unknown --profile web`: the `web`
-//!    profile of the root `Cargo.toml` (fat LTO, one codegen unit, no debug info, the
-//!    opt-level that measured best);
+//!    profile of the root `Cargo.toml` (fat LTO, one codegen unit, no debug info, opt-level 3,
+//!    which measured about twice as fast per frame as "s");
 //! 2. `wasm-bindgen --target web` (the CLI at the version pinned in `Cargo.toml`), which also
 //!    drops the debug sections and the name section;
 //! 3. binaryen's `wasm-opt` from npm (`xtask/npm`, pinned, from its lockfile), with the
@@ -61,8 +61,9 @@ const WASM_OPT_FEATURES: &[&str] = &[
     "--enable-multivalue",
 ];
 
-/// `wasm-opt`'s optimisation level (measured against `-O3` and `-Os`: see the README).
-const WASM_OPT_LEVEL: &str = "-Oz";
+/// `wasm-opt`'s optimisation level: for speed, as the cargo profile (`-Oz`, `-Os` and `-O2`
+/// make the module smaller but compress no better: see the README).
+const WASM_OPT_LEVEL: &str = "-O3";
 
 /// Where the page loads the module from (git-ignored).
 pub fn pkg_dir() -> PathBuf {
