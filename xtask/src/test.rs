@@ -113,7 +113,6 @@ fn clippy_wasm() -> Result<Option<String>> {
         "rtnav-wasm",
         "-p",
         "rtnav-tests",
-        "--all-targets",
         "--target",
         "wasm32-unknown-unknown",
         "--",
