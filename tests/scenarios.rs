@@ -10,24 +10,25 @@
 //! without loading the map), measured
 //! with the host's clock (`Instant` natively, `Date.now()` in Node); it is reported, never
 //! asserted. Build with `--release` for representative figures.
+//!
+//! `willow_garage` and `arena` drive on real maps of the external data (`$RTNAV_DATA`, else
+//! `../shared/data`), read at run time on both targets; without the data they say on one
+//! line that they are skipped.
 
+use std::borrow::Cow;
+
+use rtnav::data::{DataMissing, data_relative};
+use rtnav::errors::ScenarioError;
 use rtnav::interfaces::Pose;
 use rtnav::map::Cell;
 use rtnav::motion::angle_diff;
 use rtnav::rtc::LifecycleState;
 use rtnav::system::setup::{self, BuildOptions, Setup};
 use rtnav::system::{
-    EventKind, Input, MemoryResolver, OutcomeKind, Scenario, ScenarioReport, ScenarioRun,
-    SystemEvent,
+    EventKind, FileResolver, Input, MapSource, MemoryResolver, OutcomeKind, Scenario,
+    ScenarioReport, ScenarioRun, SystemEvent,
 };
-
-/// The willow garage map, read in place from the shared data (`../shared/data`).
-const WILLOW_YAML: &str =
-    "../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.yaml";
-const WILLOW_PGM: &str =
-    "../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.pgm";
-/// The MovingAI arena, read in place.
-const ARENA: &str = "../shared/data/movingai/dao/arena.map";
+use rtnav_tests::data::{self, Data};
 
 macro_rules! map {
     ($name:literal) => {
@@ -38,9 +39,35 @@ macro_rules! map {
     };
 }
 
-/// Every file the scenarios name, compiled in (wasm has no filesystem).
-fn resolver() -> MemoryResolver {
-    let mut r = MemoryResolver::new();
+/// The files a scenario names: the repository's maps compiled in (wasm has no filesystem of
+/// its own), the external data's (`../shared/data/…`) read at run time from wherever
+/// [`Data`] finds the folder.
+struct Files {
+    fixtures: MemoryResolver,
+    data: Option<Data>,
+}
+
+impl FileResolver for Files {
+    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, ScenarioError> {
+        let Some(rel) = data_relative(path) else {
+            return self.fixtures.read(path);
+        };
+        let missing = |reason: String| ScenarioError::File {
+            path: path.to_owned(),
+            reason,
+        };
+        let data = self
+            .data
+            .as_ref()
+            .ok_or_else(|| missing("no external data folder".to_owned()))?;
+        data.read(rel).map(Cow::Owned).map_err(missing)
+    }
+}
+
+/// The files for `scenario`, or why it must be skipped: it names external data and there is
+/// no data folder.
+fn files(scenario: &Scenario) -> Result<Files, DataMissing> {
+    let mut fixtures = MemoryResolver::new();
     for (path, bytes) in [
         map!("open_field"),
         map!("corridor_turn"),
@@ -48,26 +75,18 @@ fn resolver() -> MemoryResolver {
         map!("appearing_obstacle"),
         map!("backward_dock"),
         map!("unreachable"),
-        (
-            WILLOW_YAML,
-            &include_bytes!(
-                "../../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.yaml"
-            )[..],
-        ),
-        (
-            ARENA,
-            &include_bytes!("../../shared/data/movingai/dao/arena.map")[..],
-        ),
-        (
-            WILLOW_PGM,
-            &include_bytes!(
-                "../../shared/data/rosmaps/turtlebot_willow_garage/willow-2010-02-18-0.10.pgm"
-            )[..],
-        ),
     ] {
-        r.insert(path, bytes);
+        fixtures.insert(path, bytes);
     }
-    r
+    let external = match &scenario.map {
+        MapSource::Json { path } | MapSource::Movingai { path, .. } => path,
+        MapSource::Ros { yaml, .. } => yaml,
+    };
+    let data = match data_relative(external) {
+        Some(_) => Some(Data::locate()?),
+        None => None,
+    };
+    Ok(Files { fixtures, data })
 }
 
 macro_rules! scenario {
@@ -122,19 +141,29 @@ impl Run {
     }
 }
 
+/// Why a scenario of the repository always runs.
+const IN_REPO: &str = "the scenario's map is in the repository";
+
 /// Runs per scenario: in release builds three, to print the best real-time factor (the
 /// first run in Node also pays for V8's tiering up); in debug builds one, to stay fast.
 const RUNS: usize = if cfg!(debug_assertions) { 1 } else { 3 };
 
 /// Runs the scenario, checks its expectation (and the rules every run keeps) and its golden
-/// trace hash, prints the summary and the real-time factor.
-fn check((name, json, golden): (&str, &str, &str)) -> Run {
+/// trace hash, prints the summary and the real-time factor. `None` (after one line saying
+/// so) if the scenario needs the external data and there is none.
+fn check((name, json, golden): (&str, &str, &str)) -> Option<Run> {
     let scenario = Scenario::from_json(json).unwrap();
     assert_eq!(
         scenario.name, name,
         "the file's name and the scenario's agree"
     );
-    let files = resolver();
+    let files = match files(&scenario) {
+        Ok(files) => files,
+        Err(why) => {
+            data::skip(&format!("scenario {name}"), &why);
+            return None;
+        }
+    };
     let mut best = f64::INFINITY;
     let mut runs = Vec::new();
     for _ in 0..RUNS {
@@ -166,7 +195,7 @@ fn check((name, json, golden): (&str, &str, &str)) -> Run {
         panic!("{name}: {problems}\n{report}");
     }
     check_golden(name, golden, &report.trace_hash);
-    Run { report, run }
+    Some(Run { report, run })
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -198,13 +227,13 @@ fn check_golden(name: &str, golden: &str, hash: &str) {
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn open_field_arrives() {
-    check(scenario!("open_field"));
+    check(scenario!("open_field")).expect(IN_REPO);
 }
 
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn corridor_turn_arrives() {
-    let r = check(scenario!("corridor_turn"));
+    let r = check(scenario!("corridor_turn")).expect(IN_REPO);
     // It went round the corner: up the east corridor after the south one.
     assert!(r.report.path_length > 25.0, "{}", r.report.path_length);
 }
@@ -212,7 +241,7 @@ fn corridor_turn_arrives() {
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn parking_wall_arrives_parallel_to_the_wall() {
-    let r = check(scenario!("parking_wall"));
+    let r = check(scenario!("parking_wall")).expect(IN_REPO);
     // Posture: parallel to the wall (heading 0), within a few degrees.
     assert!(
         r.report.heading_error_deg < 2.0,
@@ -224,7 +253,7 @@ fn parking_wall_arrives_parallel_to_the_wall() {
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn appearing_obstacle_is_avoided_after_a_replan() {
-    let r = check(scenario!("appearing_obstacle"));
+    let r = check(scenario!("appearing_obstacle")).expect(IN_REPO);
     let events = r.events();
     let system = r.run.system();
     // The timeline counts from the start of the drive: the physics' activation.
@@ -265,7 +294,7 @@ fn appearing_obstacle_is_avoided_after_a_replan() {
     };
     let set_up = setup::build(
         scenario,
-        &resolver(),
+        &files(scenario).expect(IN_REPO),
         &Setup::of(scenario),
         BuildOptions::default(),
     )
@@ -298,7 +327,7 @@ fn appearing_obstacle_is_avoided_after_a_replan() {
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn backward_dock_reverses_in_without_turning() {
-    let r = check(scenario!("backward_dock"));
+    let r = check(scenario!("backward_dock")).expect(IN_REPO);
     let samples = r.run.system().record().telemetry().samples();
     assert_eq!(samples.len() as u64, r.report.samples, "every sample kept");
     assert!(
@@ -317,7 +346,7 @@ fn backward_dock_reverses_in_without_turning() {
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn unreachable_goal_fails_to_plan_and_the_robot_stands_still() {
-    let r = check(scenario!("unreachable"));
+    let r = check(scenario!("unreachable")).expect(IN_REPO);
     let failures: Vec<_> = r
         .events()
         .into_iter()
@@ -344,14 +373,18 @@ fn unreachable_goal_fails_to_plan_and_the_robot_stands_still() {
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn willow_garage_drives_through_the_building() {
-    let r = check(scenario!("willow_garage"));
+    let Some(r) = check(scenario!("willow_garage")) else {
+        return;
+    };
     assert!(r.report.path_length > 35.0, "{}", r.report.path_length);
 }
 
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn arena_from_movingai_arrives() {
-    let r = check(scenario!("arena"));
+    let Some(r) = check(scenario!("arena")) else {
+        return;
+    };
     let map = r.run.system().map().unwrap();
     assert_eq!((map.width(), map.height(), map.grid_size()), (49, 49, 0.5));
 }

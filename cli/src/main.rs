@@ -14,7 +14,9 @@
 //!
 //! Scenario files name their maps relative to the project's root; the root is found by
 //! walking up from the scenario file to the first folder where the map exists (or given
-//! with `--root`).
+//! with `--root`). A map of the external data (`../shared/data/…`) is read from
+//! `$RTNAV_DATA`, else from `../shared/data` beside the root; without it the runner stops
+//! with an error naming the file and `RTNAV_DATA` (`rtnav::data`).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -22,10 +24,11 @@ use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
+use rtnav::data::RepoResolver;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
-    BuildOptions, DirResolver, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun,
-    Session, Setup, System, setup,
+    BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
+    System, setup,
 };
 
 #[derive(Debug, Parser)]
@@ -152,7 +155,7 @@ fn main() -> ExitCode {
 
 type CliResult<T> = Result<T, String>;
 
-fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)> {
+fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, RepoResolver)> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
     let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
@@ -160,11 +163,11 @@ fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)
         Some(r) => r,
         None => find_root(path, &scenario),
     };
-    Ok((scenario, DirResolver::new(root)))
+    Ok((scenario, RepoResolver::new(root)))
 }
 
 /// The first ancestor of the scenario file (then the working folder) in which the
-/// scenario's map file exists.
+/// scenario's map file exists (a map of the external data: where it exists for that root).
 fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
     let map = match &scenario.map {
         rtnav::system::MapSource::Json { path }
@@ -175,7 +178,11 @@ fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
     start
         .ancestors()
         .skip(1)
-        .find(|dir| dir.join(&map).exists())
+        .find(|dir| {
+            RepoResolver::new(*dir)
+                .locate(&map)
+                .is_ok_and(|file| file.exists())
+        })
         .map(Path::to_path_buf)
         .unwrap_or_else(|| PathBuf::from("."))
 }

@@ -133,7 +133,11 @@ fn decision_after_a_failure_local_planning_retries_every_second_and_on_every_map
         v.abs() < 1e-3 && w.abs() < 1e-3,
         "the robot stands meanwhile"
     );
-    assert!(s.status().to_string().starts_with("waiting for a plan (retrying"));
+    assert!(
+        s.status()
+            .to_string()
+            .starts_with("waiting for a plan (retrying")
+    );
     // Opening the ring is a MapUpdate: planned again at once, and the drive resumes.
     let seen = s.record().event_count();
     let east: Vec<_> = cells

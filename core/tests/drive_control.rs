@@ -500,7 +500,11 @@ fn the_clearance_check_stops_the_body_short_of_an_obstacle_on_the_path_and_says_
         }
     }
     let face = 3.0 - 0.45;
-    assert!(p.x <= face - 0.01 + 1e-9, "the body stops short: x = {}", p.x);
+    assert!(
+        p.x <= face - 0.01 + 1e-9,
+        "the body stops short: x = {}",
+        p.x
+    );
     assert!(p.x > face - 0.05, "but not far short: x = {}", p.x);
     assert!(slowest_near < 0.01);
     assert!(
@@ -508,7 +512,11 @@ fn the_clearance_check_stops_the_body_short_of_an_obstacle_on_the_path_and_says_
         "{}",
         b.d.status()
     );
-    assert!(b.d.status().to_string().starts_with("safety stop: obstacle"));
+    assert!(
+        b.d.status()
+            .to_string()
+            .starts_with("safety stop: obstacle")
+    );
     assert!(notices.read().is_some(), "a new plan was asked for");
     // Without a map, nothing is checked: the command is the path follower's.
     let mut free = Bench::new();

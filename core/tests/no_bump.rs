@@ -12,12 +12,9 @@ use rtnav::system::{
     ScenarioRun, UnknownSpec,
 };
 
-/// The shared data folder (`RTNAV_DATA`, else `../shared/data` beside the repository).
-fn data_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("RTNAV_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data"));
-    dir.join("rosmaps").is_dir().then_some(dir)
+/// The external data folder (`$RTNAV_DATA`, else `../shared/data` beside the repository).
+fn data_dir() -> Result<PathBuf, rtnav::data::DataMissing> {
+    rtnav::data::data_dir(&PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(".."))
 }
 
 /// A small deterministic generator (the test's own; the core has no randomness).
@@ -100,9 +97,12 @@ fn pairs(map: &GridMap, dmin: f64, n: usize, seed: u64) -> Vec<(Pose, Pose)> {
 }
 
 fn drive_pairs(yaml: &str, n: usize, seed: u64) {
-    let Some(data) = data_dir() else {
-        println!("skipped: no shared data (set RTNAV_DATA or place ../shared/data) for {yaml}");
-        return;
+    let data = match data_dir() {
+        Ok(data) => data,
+        Err(why) => {
+            eprintln!("SKIPPED no bump on {yaml}: {why}");
+            return;
+        }
     };
     let resolver = DirResolver::new(&data);
     let source = MapSource::Ros {

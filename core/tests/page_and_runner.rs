@@ -4,7 +4,8 @@
 
 use std::path::PathBuf;
 
-use rtnav::system::{DirResolver, Input, OutcomeKind, Scenario, ScenarioRun, Session, judge};
+use rtnav::data::RepoResolver;
+use rtnav::system::{Input, OutcomeKind, Scenario, ScenarioRun, Session, judge};
 
 fn scenarios() -> Vec<PathBuf> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir("../fixtures/scenarios")
@@ -16,8 +17,8 @@ fn scenarios() -> Vec<PathBuf> {
     paths
 }
 
-/// The data a scenario names beyond the repository (`../shared/...`) is there.
-fn available(scenario: &Scenario, root: &DirResolver) -> bool {
+/// The data a scenario names beyond the repository (`../shared/data/...`) is there.
+fn available(scenario: &Scenario, root: &RepoResolver) -> bool {
     use rtnav::system::FileResolver;
     scenario
         .map_files(root)
@@ -26,11 +27,14 @@ fn available(scenario: &Scenario, root: &DirResolver) -> bool {
 
 #[test]
 fn the_pages_set_up_driven_to_the_end_gives_the_runners_trace() {
-    let root = DirResolver::new("..");
+    let root = RepoResolver::new("..");
     for path in scenarios() {
         let scenario = Scenario::from_json(&std::fs::read_to_string(&path).unwrap()).unwrap();
         if !available(&scenario, &root) {
-            println!("skipped {}: its map is not here", path.display());
+            eprintln!(
+                "SKIPPED {}: its map is external data, not here",
+                path.display()
+            );
             continue;
         }
         let mut run = ScenarioRun::new(&scenario, &root).unwrap();

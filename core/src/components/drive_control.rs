@@ -132,7 +132,10 @@ impl fmt::Display for DriveStatus {
             Self::Driving(DrivePhase::Arrived) => f.write_str("arrived"),
             Self::SafeStop(e) => write!(f, "safe stop, zero velocity: {e}"),
             Self::SafetyStop { ahead } => {
-                write!(f, "safety stop: obstacle {ahead:.2} m ahead, a new plan asked for")
+                write!(
+                    f,
+                    "safety stop: obstacle {ahead:.2} m ahead, a new plan asked for"
+                )
             }
         }
     }

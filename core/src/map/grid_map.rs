@@ -335,19 +335,46 @@ mod tests {
         let before = m.clone();
         let tm = Time { sec: 3, nsec: 4 };
         assert!(matches!(
-            m.map_update(&MapUpdate { x: vec![0, 1], y: vec![0], value: vec![1, 1], num: 2, tm: tm }),
+            m.map_update(&MapUpdate {
+                x: vec![0, 1],
+                y: vec![0],
+                value: vec![1, 1],
+                num: 2,
+                tm: tm
+            }),
             Err(MapError::UpdateLength { array: "Y", .. })
         ));
         assert!(matches!(
-            m.map_update(&MapUpdate { x: vec![0, 2], y: vec![0, 0], value: vec![1, 1], num: 2, tm: tm }),
+            m.map_update(&MapUpdate {
+                x: vec![0, 2],
+                y: vec![0, 0],
+                value: vec![1, 1],
+                num: 2,
+                tm: tm
+            }),
             Err(MapError::CellOutside { x: 2, .. })
         ));
         assert!(matches!(
-            m.map_update(&MapUpdate { x: vec![0, 1], y: vec![0, 0], value: vec![1, 2], num: 2, tm: tm }),
+            m.map_update(&MapUpdate {
+                x: vec![0, 1],
+                y: vec![0, 0],
+                value: vec![1, 2],
+                num: 2,
+                tm: tm
+            }),
             Err(MapError::BadCellValue { what: "value", .. })
         ));
         assert_eq!(m, before);
-        assert_eq!(m.map_update(&MapUpdate { x: vec![0, 1], y: vec![0, 0], value: vec![1, 1], num: 2, tm: tm }), Ok(2));
+        assert_eq!(
+            m.map_update(&MapUpdate {
+                x: vec![0, 1],
+                y: vec![0, 0],
+                value: vec![1, 1],
+                num: 2,
+                tm: tm
+            }),
+            Ok(2)
+        );
         assert_eq!(m.version(), tm);
         assert!(m.is_obstacle(1, 0));
         assert_eq!(m.obstacle_distance((0, 1)), 1.0);

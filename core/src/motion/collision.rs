@@ -30,9 +30,8 @@ pub fn free_travel(
     reach: f64,
 ) -> f64 {
     let need = radius + margin;
-    let touching = |p: Pose| {
-        clearance_lower_bound(map, p.x, p.y) < need && clearance(map, p.x, p.y) < need
-    };
+    let touching =
+        |p: Pose| clearance_lower_bound(map, p.x, p.y) < need && clearance(map, p.x, p.y) < need;
     if touching(pose) {
         return 0.0;
     }

@@ -359,7 +359,11 @@ impl PurePursuit {
         let after = line.point_at((s + window).min(line.length()));
         let chord = |a: (f64, f64), b: (f64, f64), fallback: (f64, f64)| {
             let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-            if dx == 0.0 && dy == 0.0 { fallback } else { (dx, dy) }
+            if dx == 0.0 && dy == 0.0 {
+                fallback
+            } else {
+                (dx, dy)
+            }
         };
         let (ax, ay) = chord(before, v, line.direction(k - 1));
         let (bx, by) = chord(v, after, line.direction(k));
