@@ -1,7 +1,7 @@
 //! Shared helpers for the whole-system tests (native and wasm32).
 //!
 //! - [`Journal`] and [`Probe`]: a component that records every callback it gets (with its
-//!   [`Tick`]) and fails any callback it is told to, for the lifecycle tests (SPEC §1).
+//!   [`Tick`]) and fails any callback it is told to, for the lifecycle tests (spec §1).
 //! - [`data`]: the external data, read at run time on both targets, and the one-line
 //!   notice of a test skipped without it.
 

@@ -1,4 +1,4 @@
-//! Every scenario of `fixtures/scenarios/` runs to its expected outcome (SPEC §0, §6), and its
+//! Every scenario of `fixtures/scenarios/` runs to its expected outcome (spec §0, §6), and its
 //! trace hash — SHA-256 over every telemetry sample — equals the golden one in
 //! `fixtures/golden/traces/`. The same tests run natively and compiled to wasm32 under Node,
 //! so the golden hashes prove the two traces bit-identical.

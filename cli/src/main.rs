@@ -1,4 +1,4 @@
-//! `rtnav`: the headless runner (SPEC §0, §6). Runs a scenario to its outcome and prints a
+//! `rtnav`: the headless runner (spec §0, §6). Runs a scenario to its outcome and prints a
 //! summary, writes the final frame as PNG and the telemetry as CSV; or draws the initial
 //! plan of a scenario without driving.
 //!

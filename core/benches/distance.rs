@@ -1,4 +1,4 @@
-//! The exact Euclidean distance transform (SPEC §2) on a 1000 × 1000 map: building a map
+//! The exact Euclidean distance transform (spec §2) on a 1000 × 1000 map: building a map
 //! (validation + full transform), a `MapUpdate` touching many columns (full recompute), and
 //! a one-cell `MapUpdate` (incremental: one column and the rows it changed).
 //!

@@ -1,4 +1,4 @@
-//! A* on the MovingAI benchmark maps (SPEC §5 "GlobalPathPlanning"), side by side with the
+//! A* on the MovingAI benchmark maps (spec §5 "GlobalPathPlanning"), side by side with the
 //! `pathfinding` crate's `astar` on the same grid and rules (8 moves, octile costs, no corner
 //! cutting; its costs are integers, straight 2^32 and diagonal round(√2 · 2^32)).
 //!

@@ -1,4 +1,4 @@
-//! LocalPathPlanning benchmarks (SPEC §3 steps 3–7): the potential field and the local path
+//! LocalPathPlanning benchmarks (spec §3 steps 3–7): the potential field and the local path
 //! on a 1000 × 1000 map of 0.05 m cells with some obstacles, default parameters (000 §4.2:
 //! RouteRemakeDistance 10 m, dmin 0.5 m, PostureConsiderationLevel 85 %).
 //!

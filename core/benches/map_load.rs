@@ -1,4 +1,4 @@
-//! Map loading (SPEC §2 formats): the two ROS map_server maps from bytes (YAML + PGM decode,
+//! Map loading (spec §2 formats): the two ROS map_server maps from bytes (YAML + PGM decode,
 //! classification, `GridMap` with its distance transform), a MovingAI map, and rtnav JSON.
 //! The ROS and MovingAI maps are external data (`$RTNAV_DATA`, else `../shared/data`): without
 //! it their benchmarks are skipped, with a line saying so, and the JSON ones use the

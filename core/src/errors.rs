@@ -19,38 +19,38 @@ pub use crate::system::{ConfBundleError, ScenarioError, SessionError, SystemErro
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Error {
-    /// An illegal lifecycle request or an execution-context problem (SPEC §1).
+    /// An illegal lifecycle request or an execution-context problem (spec §1).
     #[error(transparent)]
     Lifecycle(#[from] LifecycleError),
-    /// A configuration parameter or `.conf` file problem (SPEC §1).
+    /// A configuration parameter or `.conf` file problem (spec §1).
     #[error(transparent)]
     Config(#[from] ConfigError),
-    /// A map that cannot be built, loaded or updated (SPEC §2).
+    /// A map that cannot be built, loaded or updated (spec §2).
     #[error(transparent)]
     Map(#[from] MapError),
-    /// A global plan that cannot be made (SPEC §5 "GlobalPathPlanning").
+    /// A global plan that cannot be made (spec §5 "GlobalPathPlanning").
     #[error(transparent)]
     GlobalPlanning(#[from] GlobalPlanningError),
-    /// A LocalPath service call refused, or a local plan that could not be made (SPEC §3).
+    /// A LocalPath service call refused, or a local plan that could not be made (spec §3).
     #[error(transparent)]
     LocalPath(#[from] LocalPathError),
-    /// Bad input or parameters of the motion components (SPEC §4, §5).
+    /// Bad input or parameters of the motion components (spec §4, §5).
     #[error(transparent)]
     Motion(#[from] MotionError),
-    /// A scene or frame the renderer cannot draw (SPEC §5 InventGUI).
+    /// A scene or frame the renderer cannot draw (spec §5 InventGUI).
     #[cfg(feature = "render")]
     #[error(transparent)]
     Render(#[from] RenderError),
-    /// A request to the whole system that cannot be carried out (SPEC §0).
+    /// A request to the whole system that cannot be carried out (spec §0).
     #[error(transparent)]
     System(#[from] SystemError),
-    /// A scenario that cannot be read or used (SPEC §6).
+    /// A scenario that cannot be read or used (spec §6).
     #[error(transparent)]
     Scenario(#[from] ScenarioError),
     /// A request of the page's session (clock, share links).
     #[error(transparent)]
     Session(#[from] SessionError),
-    /// A configuration bundle that cannot be read or applied (SPEC §1).
+    /// A configuration bundle that cannot be read or applied (spec §1).
     #[error(transparent)]
     ConfBundle(#[from] ConfBundleError),
 }

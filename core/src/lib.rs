@@ -7,7 +7,7 @@
 //!
 //! The specification is `docs/spec.md` in the repository: §0–§6 describe the system and the
 //! project's decisions, its second part the three seed documents section by section. Doc
-//! comments cite both (`spec §3`, older ones `SPEC §3`: the same section; `000 §5.2.4.9`).
+//! comments cite both (`spec §3`, older ones `spec §3`: the same section; `000 §5.2.4.9`).
 //!
 //! Real maps nobody on the project wrote (the MovingAI benchmark, ROS maps) are external
 //! data, found at run time ([`data`]: `$RTNAV_DATA`, else `../shared/data`).

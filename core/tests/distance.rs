@@ -1,4 +1,4 @@
-//! SPEC §2: the grid map and its obstacle distances.
+//! spec §2: the grid map and its obstacle distances.
 //! - The exact Euclidean distance transform equals a brute-force distance on random maps
 //!   (proptest), also after random `MapUpdate`s (kept current incrementally).
 //! - `SetMap` / `MapUpdate` refuse bad input with an error naming the problem, and change
@@ -10,7 +10,7 @@ use rtnav::map::{GridMap, MAX_CELLS, MapUpdate};
 use rtnav::rtc::Time;
 
 /// Brute force: metres from each cell centre to the nearest obstacle centre, the ring of
-/// cells around the map counting as obstacles (SPEC §2), as `√d² · GridSize`.
+/// cells around the map counting as obstacles (spec §2), as `√d² · GridSize`.
 fn brute(map: &GridMap) -> Vec<f64> {
     let (w, h) = (map.width() as i64, map.height() as i64);
     let mut out = Vec::with_capacity((w * h) as usize);

@@ -1,4 +1,4 @@
-//! DriveControl (SPEC §5) alone, and closed loop with MotorControl, the physics and
+//! DriveControl (spec §5) alone, and closed loop with MotorControl, the physics and
 //! Localization: DriveControl at 50 Hz, the rest at 1 kHz, in one execution context.
 
 use core::f64::consts::PI;
@@ -247,7 +247,7 @@ fn a_large_heading_error_turns_on_the_spot_first() {
 
 // ------------------------------------------------------------ closed loop
 
-/// PhysicsSim → MotorControl → Localization → DriveControl → MotorControl, wired as SPEC §0,
+/// PhysicsSim → MotorControl → Localization → DriveControl → MotorControl, wired as spec §0,
 /// the physics in RH0's model frame.
 struct Rig {
     ec: ExecutionContext,

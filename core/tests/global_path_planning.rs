@@ -1,4 +1,4 @@
-//! SPEC §5 "GlobalPathPlanning": the A* planner against an independent reference on random
+//! spec §5 "GlobalPathPlanning": the A* planner against an independent reference on random
 //! maps (with and without `dmin`), and the RT-component on the framework: services, the
 //! `dmin` parameter, the `GlobalPathCourse` and `PlanningFailure` ports, and its errors.
 

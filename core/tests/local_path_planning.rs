@@ -1,4 +1,4 @@
-//! The LocalPathPlanning RT-component (seed 000, SPEC §3): its services, flags, ports,
+//! The LocalPathPlanning RT-component (seed 000, spec §3): its services, flags, ports,
 //! parameters and the behaviour on every tick, on small hand-made maps with exact
 //! expectations. Test names carry the seed section they check.
 
@@ -694,7 +694,7 @@ fn s5_2_4_7_clear_drops_everything() {
     ));
 }
 
-// ----- SafeMode (SPEC §3 Decision) -----
+// ----- SafeMode (spec §3 Decision) -----
 
 #[test]
 fn s3_2_2_1_safe_mode_halts_until_the_next_set_position() {
@@ -841,7 +841,7 @@ fn s5_2_4_13_a_current_position_within_dmin_escapes_the_zone_and_one_on_an_obsta
     );
 }
 
-// ----- in an execution context (SPEC §1) -----
+// ----- in an execution context (spec §1) -----
 
 #[test]
 fn s5_2_4_runs_in_an_execution_context() {

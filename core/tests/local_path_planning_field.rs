@@ -1,4 +1,4 @@
-//! The algorithms of LocalPathPlanning (seed 000 §5.2.4.8–12, SPEC §3 steps 3–7) on small
+//! The algorithms of LocalPathPlanning (seed 000 §5.2.4.8–12, spec §3 steps 3–7) on small
 //! hand-made maps, with exact expectations. Test names carry the seed section they check.
 
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
@@ -200,7 +200,7 @@ fn s5_2_4_9_every_reached_cell_is_above_its_parent_by_its_three_parts() {
 
 #[test]
 fn s5_2_4_9_posture_part_follows_the_formula() {
-    // SPEC §3 step 4: P = (G_Angle·SL/GL + S_Angle·(GL/SL)·L)·PCL/100, computed here from
+    // spec §3 step 4: P = (G_Angle·SL/GL + S_Angle·(GL/SL)·L)·PCL/100, computed here from
     // angle differences instead of the implementation's atan2(|v×h|, v·h).
     let map = open_map(30, 30, 0.1);
     let (current, target) = ((5, 10), (22, 18));
@@ -860,7 +860,7 @@ fn s5_2_4_12_collinear_points_thinned_only_where_truly_collinear() {
     );
 }
 
-// ----- SPEC §3 steps 3–7 together -----
+// ----- spec §3 steps 3–7 together -----
 
 #[test]
 fn s5_2_4_planner_replans_around_an_obstacle_on_the_held_path() {

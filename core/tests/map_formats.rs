@@ -1,4 +1,4 @@
-//! SPEC §2 map formats: rtnav JSON, ROS map_server (YAML + PGM/PNG) and MovingAI
+//! spec §2 map formats: rtnav JSON, ROS map_server (YAML + PGM/PNG) and MovingAI
 //! `.map`/`.scen`. Real data from the external data folder (`$RTNAV_DATA`, else
 //! `../shared/data`; read in place, and skipped with a line when absent), small hand-made
 //! inputs, and bad inputs that must be refused with an error naming the problem.

@@ -1,4 +1,4 @@
-//! SPEC §5 "GlobalPathPlanning": A* is optimal on the MovingAI grid benchmark
+//! spec §5 "GlobalPathPlanning": A* is optimal on the MovingAI grid benchmark
 //! (`movingai/` of the external data folder — `$RTNAV_DATA`, else `../shared/data`; skipped
 //! with a line when absent — Sturtevant 2012, ODC-BY): for every problem of every `.scen`
 //! file, the path length equals the published optimal length (relative 1e-4) and the path is

@@ -1,4 +1,4 @@
-//! The physics (SPEC §5) alone and in closed loop with MotorControl (SPEC §4) at 1 kHz with
+//! The physics (spec §5) alone and in closed loop with MotorControl (spec §4) at 1 kHz with
 //! the seed's default gains (P 5, D 2).
 
 use rtnav::components::{MotorControl, MotorStatus, PhysicsSim};

@@ -1,4 +1,4 @@
-//! The whole system's GUI-facing API (SPEC §0, what InventGUI did), driven with [`Input`]s:
+//! The whole system's GUI-facing API (spec §0, what InventGUI did), driven with [`Input`]s:
 //! bad input is refused with a clear error and changes nothing; a bump puts the system in
 //! Error and Reset recovers; goals, SafeMode, Clear, faults, rates, configuration, the set-up,
 //! telemetry. The scenarios themselves run in `tests/scenarios.rs` (native and wasm32).

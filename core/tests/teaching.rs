@@ -1,6 +1,6 @@
-//! The core of the teaching tools (issue 8): PhysicsSim's configuration (SPEC §5 "Physics"),
-//! the whole configuration as one OpenRTM `.conf` bundle (SPEC §1), and the cell inspector
-//! (SPEC §2 obstacle distance, SPEC §3 step 4 potential field).
+//! The core of the teaching tools (issue 8): PhysicsSim's configuration (spec §5 "Physics"),
+//! the whole configuration as one OpenRTM `.conf` bundle (spec §1), and the cell inspector
+//! (spec §2 obstacle distance, spec §3 step 4 potential field).
 
 use std::collections::BTreeSet;
 
@@ -58,7 +58,7 @@ fn physics_parameter_defaults_are_the_model_the_system_is_built_with() {
     for spec in cfg.specs() {
         assert_eq!(spec.reflection.to_string(), "always");
         assert!(
-            spec.description.contains("SPEC §5 Physics"),
+            spec.description.contains("spec §5 Physics"),
             "{}",
             spec.name
         );

@@ -1,7 +1,7 @@
 //! [`Demo`]: a [`Session`] (the system as a person drives it) and the renderer behind one
-//! handle (SPEC §5 InventGUI).
+//! handle (spec §5 InventGUI).
 //!
-//! Every method is one request to the core: the lifecycle requests of SPEC §1 (per
+//! Every method is one request to the core: the lifecycle requests of spec §1 (per
 //! component and for all), `SetPosition`, `Clear`, `SafeMode`, `MapUpdate`, parameters,
 //! map and scenario loading, stepping, drawing. What the page reads comes back as JSON
 //! (`views`). The page's model of a run — the planning preview, the robot waiting for

@@ -1,4 +1,4 @@
-//! DriveControl (SPEC §5): follows LocalPathPlanning's control points and sends MotorControl
+//! DriveControl (spec §5): follows LocalPathPlanning's control points and sends MotorControl
 //! its `TargetVelocity`; tells LocalPathPlanning how far the robot is from the path
 //! (`OutDeviating` → `InDeviating`, 000 §3.1, §5.2.4.5).
 //!
@@ -6,7 +6,7 @@
 //! limits on speed, acceleration and turn rate, turning on the spot when the heading error is
 //! large, slowing to a stop at the goal and turning to the goal heading, and driving backward
 //! when the planner says so ([`crate::motion::PurePursuit`] has the details). Run it at 50 Hz
-//! (SPEC §6).
+//! (spec §6).
 //!
 //! Without a pose, with a non-finite pose, or with no new pose for 0.5 s it sends zero
 //! velocity and reports why.
@@ -33,7 +33,7 @@ use crate::rtc::{
     TimedPosition, TimedVelocity,
 };
 
-/// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, SPEC §4).
+/// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, spec §4).
 pub const POSE_TIMEOUT_NS: u64 = 500_000_000;
 /// While a safety stop lasts, how often a new plan is asked for \[ns\].
 pub const SAFETY_RETRY_NS: u64 = 1_000_000_000;
@@ -41,7 +41,7 @@ pub const SAFETY_RETRY_NS: u64 = 1_000_000_000;
 const BLOCKED: f64 = 0.005;
 
 define_parameters! {
-    /// DriveControl's configuration parameters (SPEC §5: "limits on speed, acceleration and
+    /// DriveControl's configuration parameters (spec §5: "limits on speed, acceleration and
     /// turn rate"); all `always`.
     pub struct DriveControlParams {
         /// Largest speed.

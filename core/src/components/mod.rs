@@ -1,4 +1,4 @@
-//! The RT-components, one per file, named as in the seeds (SPEC §0).
+//! The RT-components, one per file, named as in the seeds (spec §0).
 
 mod drive_control;
 mod localization;

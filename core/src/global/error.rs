@@ -1,6 +1,6 @@
-//! Errors of the global planner (SPEC §5 "GlobalPathPlanning").
+//! Errors of the global planner (spec §5 "GlobalPathPlanning").
 
-/// Errors of the global planner (SPEC §5 "GlobalPathPlanning"). Each is also sent as a
+/// Errors of the global planner (spec §5 "GlobalPathPlanning"). Each is also sent as a
 /// `PlanningFailure` notice by the component.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]

@@ -1,6 +1,6 @@
-//! Errors of LocalPathPlanning (seed 000, SPEC §3).
+//! Errors of LocalPathPlanning (seed 000, spec §3).
 
-/// Errors of the LocalPathPlanning component (seed 000, SPEC §3): a `LocalPath` service call
+/// Errors of the LocalPathPlanning component (seed 000, spec §3): a `LocalPath` service call
 /// refused (nothing held changes), or the reason a local plan could not be made (sent to the
 /// GUI as the planning-failure notice of 000 §5.2.4.13).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -28,7 +28,7 @@ pub enum LocalPathError {
         /// The service call.
         call: &'static str,
     },
-    /// A position outside the map (outside counts as obstacle, SPEC §2).
+    /// A position outside the map (outside counts as obstacle, spec §2).
     #[error("{what} ({x}, {y}) is outside the map")]
     OutsideMap {
         /// `start`, `goal` or `current position`.
@@ -91,7 +91,7 @@ pub enum LocalPathError {
         /// Map height.
         height: usize,
     },
-    /// Consecutive path cells that are not 8-neighbours (SPEC §3 Decision).
+    /// Consecutive path cells that are not 8-neighbours (spec §3 Decision).
     #[error(
         "GlobalPathCourse: cells {} = ({}, {}) and {} = ({}, {}) are not 8-neighbours",
         index - 1, from.0, from.1, index, to.0, to.1

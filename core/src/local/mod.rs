@@ -1,5 +1,5 @@
 //! Local path planning algorithms of seed 000: local target, potential field, descent,
-//! merge, control points (SPEC §3 steps 3–7). The RT-component that decides when to use
+//! merge, control points (spec §3 steps 3–7). The RT-component that decides when to use
 //! them is [`crate::components::LocalPathPlanning`].
 //!
 //! Architecture invariant: nothing here knows about ports, ticks or flags; every function

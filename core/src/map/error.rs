@@ -1,6 +1,6 @@
-//! Errors building, loading or updating a grid map (SPEC §2).
+//! Errors building, loading or updating a grid map (spec §2).
 
-/// Errors building, loading or updating a grid map (SPEC §2).
+/// Errors building, loading or updating a grid map (spec §2).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum MapError {

@@ -1,5 +1,5 @@
 //! `GridMap`: the occupancy grid of `SetMap` (000 §3.2.2.1 (4), §5.2.4.1), its world frame,
-//! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (SPEC §2).
+//! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (spec §2).
 
 use super::distance::DistanceField;
 use super::{MapError, MapUpdate};
@@ -15,7 +15,7 @@ pub const MAX_CELLS: usize = 16 * 1024 * 1024;
 /// passable with a repulsion `1/(d − dmin)²` of about 10³².
 pub const DMIN_TOLERANCE: f64 = 1e-9;
 
-/// Whether an obstacle distance lies within `dmin` (SPEC §2, §3 step 4: "cells with obstacle
+/// Whether an obstacle distance lies within `dmin` (spec §2, §3 step 4: "cells with obstacle
 /// distance ≤ `dmin` are impassable"), with [`DMIN_TOLERANCE`]. Every planner, the renderer's
 /// dmin zone and the start/goal checks use this one predicate.
 pub fn within_dmin(distance: f64, dmin: f64) -> bool {
@@ -26,7 +26,7 @@ pub fn within_dmin(distance: f64, dmin: f64) -> bool {
 /// lower-left cell.
 pub type Cell = (usize, usize);
 
-/// An occupancy grid. A `GridMap` that exists is valid (SPEC §2 Decision): dimensions ≥ 1,
+/// An occupancy grid. A `GridMap` that exists is valid (spec §2 Decision): dimensions ≥ 1,
 /// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
 /// 0 (free) or 1 (obstacle).
 #[derive(Debug, Clone, PartialEq)]
@@ -174,7 +174,7 @@ impl GridMap {
         &self.cells
     }
 
-    /// Obstacle distances in metres, x fastest (SPEC §2): from each cell's centre to the
+    /// Obstacle distances in metres, x fastest (spec §2): from each cell's centre to the
     /// nearest obstacle cell's centre, cells outside the map counting as obstacles; 0 on an
     /// obstacle cell.
     pub fn distances(&self) -> &[f64] {
@@ -192,12 +192,12 @@ impl GridMap {
         x >= 0 && y >= 0 && (x as u64) < self.width as u64 && (y as u64) < self.height as u64
     }
 
-    /// Whether `(x, y)` is an obstacle; outside the map counts as obstacle (SPEC §2).
+    /// Whether `(x, y)` is an obstacle; outside the map counts as obstacle (spec §2).
     pub fn is_obstacle(&self, x: i64, y: i64) -> bool {
         !self.contains(x, y) || self.cells[x as usize + y as usize * self.width] == 1
     }
 
-    /// Obstacle distance of a cell, metres (SPEC §2): 0 on an obstacle cell, and 0 for a
+    /// Obstacle distance of a cell, metres (spec §2): 0 on an obstacle cell, and 0 for a
     /// cell outside the map, which counts as obstacle.
     pub fn obstacle_distance(&self, (x, y): Cell) -> f64 {
         if x < self.width && y < self.height {
@@ -221,7 +221,7 @@ impl GridMap {
         Some((fx as i64, fy as i64))
     }
 
-    /// The in-map cell containing world point `(wx, wy)`, if any (SPEC §2 "World ↔ grid").
+    /// The in-map cell containing world point `(wx, wy)`, if any (spec §2 "World ↔ grid").
     pub fn world_to_cell(&self, wx: f64, wy: f64) -> Option<Cell> {
         let (x, y) = self.world_to_cell_signed(wx, wy)?;
         self.contains(x, y).then_some((x as usize, y as usize))

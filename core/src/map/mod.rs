@@ -1,4 +1,4 @@
-//! The grid map every component shares (SPEC §2), its obstacle distances, and the map file
+//! The grid map every component shares (spec §2), its obstacle distances, and the map file
 //! formats.
 
 mod error;

@@ -1,7 +1,7 @@
-//! Errors of the motion components (SPEC §4, §5).
+//! Errors of the motion components (spec §4, §5).
 
-/// Errors of the motion components: MotorControl (SPEC §4), the physics, DriveControl and
-/// Localization (SPEC §5). A component that meets one of these on a data port does not fail:
+/// Errors of the motion components: MotorControl (spec §4), the physics, DriveControl and
+/// Localization (spec §5). A component that meets one of these on a data port does not fail:
 /// it goes to its safe state (zero torque, zero velocity, the held pose) and reports it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]

@@ -1,8 +1,8 @@
 //! The robot's motion: differential-drive kinematics and the physics that replaces OpenHRP3
-//! (SPEC §4, §5).
+//! (spec §4, §5).
 //!
 //! Everything here is pure: explicit inputs, explicit time steps, no clock, `libm` for every
-//! transcendental function (SPEC §6). The RT-components that use it live in
+//! transcendental function (spec §6). The RT-components that use it live in
 //! `crate::components` (`MotorControl`, `PhysicsSim`, `DriveControl`, `Localization`).
 //!
 //! Architecture invariant: this module knows nothing of ports, ticks or the lifecycle.

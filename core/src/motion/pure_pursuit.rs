@@ -1,4 +1,4 @@
-//! Path following for DriveControl (SPEC §5 "DriveControl"): the control points as a
+//! Path following for DriveControl (spec §5 "DriveControl"): the control points as a
 //! polyline, pure pursuit with a look-ahead, limits on speed, acceleration and turn rate,
 //! turning on the spot when the heading error is large, slowing to a stop at the goal and
 //! turning to the goal heading, backward driving.
@@ -177,7 +177,7 @@ impl Polyline {
     }
 }
 
-/// DriveControl's limits and gains (SPEC §5; DriveControl's configuration parameters).
+/// DriveControl's limits and gains (spec §5; DriveControl's configuration parameters).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PursuitParams {
     /// Largest speed \[m/s\].

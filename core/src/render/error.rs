@@ -1,6 +1,6 @@
 //! Errors of the renderer.
 
-/// Errors of the renderer (SPEC §5 InventGUI): a frame size or a scene it cannot draw. Drawing
+/// Errors of the renderer (spec §5 InventGUI): a frame size or a scene it cannot draw. Drawing
 /// itself never fails for a valid scene.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]

@@ -7,7 +7,7 @@
 //! one-cell wall never vanishes, it turns grey), computed as a separable box sum; when a cell
 //! is larger, a pixel shows the cell under its centre, and big cells get faint grid lines.
 //! Integer arithmetic and exact float operations only, so the result is the same on every
-//! target (SPEC §6).
+//! target (spec §6).
 
 use super::colour::Rgba;
 use super::scene::{FieldCellState, FieldView, Layers};

@@ -72,7 +72,7 @@ struct HeatKey {
 /// Paths and the trail are drawn through the fewest points within this many pixels of them.
 const SIMPLIFY: f32 = 0.5;
 
-/// Draws scenes into an owned `width × height` frame (SPEC §5 InventGUI): the runner's PNGs
+/// Draws scenes into an owned `width × height` frame (spec §5 InventGUI): the runner's PNGs
 /// and the browser canvas. Keep one per canvas: it caches the static layers between frames.
 pub struct Renderer {
     layout: Layout,

@@ -1,4 +1,4 @@
-//! Configuration parameters (SPEC §1 "Configuration parameters", 000 §4, 002 §4).
+//! Configuration parameters (spec §1 "Configuration parameters", 000 §4, 002 §4).
 //!
 //! A component declares its parameters once with
 //! [`define_parameters!`](crate::define_parameters): a plain struct the component reads with

@@ -1,9 +1,9 @@
-//! Errors of the component model: lifecycle requests and the execution context (SPEC §1,
+//! Errors of the component model: lifecycle requests and the execution context (spec §1,
 //! seed 003), configuration parameters and `.conf` files.
 
 use super::{ContextState, LifecycleState, Request};
 
-/// Errors of the RT-component lifecycle and execution context (SPEC §1, seed 003).
+/// Errors of the RT-component lifecycle and execution context (spec §1, seed 003).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum LifecycleError {
@@ -61,7 +61,7 @@ pub enum LifecycleError {
     },
 }
 
-/// Errors of configuration parameters and `.conf` files (SPEC §1).
+/// Errors of configuration parameters and `.conf` files (spec §1).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum ConfigError {

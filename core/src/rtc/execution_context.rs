@@ -1,8 +1,8 @@
 //! The execution context: simulated-time ticks drive components through the lifecycle of
-//! SPEC §1's table (seed 003 "実行コンテキスト", "RTCの状態遷移").
+//! spec §1's table (seed 003 "実行コンテキスト", "RTCの状態遷移").
 //!
 //! Time is an integer count of nanoseconds, advanced only by [`ExecutionContext::tick`]: no
-//! clock is read (SPEC §6). The context has a *base rate* (e.g. 1 kHz); each component runs at
+//! clock is read (spec §6). The context has a *base rate* (e.g. 1 kHz); each component runs at
 //! its own rate, whose period must be a whole number of base ticks.
 //!
 //! **Order (documented invariant)**: on base tick `k` (time `k · base_period`), every
@@ -23,7 +23,7 @@
 //! end (OpenRTM's manager calls them, not the context), so attach, initialize and finalize
 //! work in either context state.
 //!
-//! **Decision (callback failures the table leaves open)**, following SPEC §1's table and
+//! **Decision (callback failures the table leaves open)**, following spec §1's table and
 //! OpenRTM-aist's `RTObjectStateMachine`. Every failure is recorded as a [`LifecycleEvent`]
 //! with its reason and kept as [`ExecutionContext::last_error`]; then:
 //!
@@ -437,7 +437,7 @@ impl ExecutionContext {
     }
 
     /// Any state → Finalized (`on_finalize`, once), with the context Running or Stopped. Only
-    /// `on_finalize` runs (SPEC §1's table). Afterwards every request about the component is
+    /// `on_finalize` runs (spec §1's table). Afterwards every request about the component is
     /// illegal and no callback of it runs again.
     pub fn finalize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         use LifecycleState::*;

@@ -1,4 +1,4 @@
-//! The whole system's configuration as one OpenRTM `.conf` text (SPEC §1 "Configuration
+//! The whole system's configuration as one OpenRTM `.conf` text (spec §1 "Configuration
 //! parameters"; the teaching page's export and import).
 //!
 //! **Decision (bundle format)**: the text is a sequence of blocks, one per component that

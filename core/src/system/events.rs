@@ -79,7 +79,7 @@ pub enum EventKind {
         /// Why.
         reason: String,
     },
-    /// The robot touched an obstacle (SPEC §5): it stops and the physics goes to Error.
+    /// The robot touched an obstacle (spec §5): it stops and the physics goes to Error.
     Bump {
         /// The physics' report.
         report: BumpReport,
@@ -96,7 +96,7 @@ pub enum EventKind {
         /// turn: what the posture term of the plan achieved.
         approach_heading_error: f64,
     },
-    /// A component's callback failed (SPEC §1: the reason the GUI shows).
+    /// A component's callback failed (spec §1: the reason the GUI shows).
     ComponentError {
         /// The component's instance name.
         component: String,

@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::errors::SystemError;
 
-/// One of the system's components (SPEC §0). The order of [`ComponentKind::ALL`] is the
+/// One of the system's components (spec §0). The order of [`ComponentKind::ALL`] is the
 /// attachment order, which is the order they run in a tick (see `crate::system`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum ComponentKind {
@@ -57,7 +57,7 @@ impl ComponentKind {
         Self::DMIN_HOLDERS.contains(&self)
     }
 
-    /// The component's name as in the seeds and SPEC §0 (e.g. `LocalPathPlanning`).
+    /// The component's name as in the seeds and spec §0 (e.g. `LocalPathPlanning`).
     pub fn name(self) -> &'static str {
         match self {
             Self::MapBuilder => "MapBuilder",

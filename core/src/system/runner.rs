@@ -1,5 +1,5 @@
 //! The scenario runner: builds the system from a [`Scenario`], drives it to its outcome and
-//! reports what happened (SPEC §6: the same scenario gives the same trace bit for bit).
+//! reports what happened (spec §6: the same scenario gives the same trace bit for bit).
 
 use core::fmt;
 

@@ -120,7 +120,7 @@ pub struct ComponentParameters {
     pub params: Vec<ParameterView>,
 }
 
-/// One parameter: its declaration (SPEC §1) and its values now.
+/// One parameter: its declaration (spec §1) and its values now.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ParameterView {
     /// The seed's name.

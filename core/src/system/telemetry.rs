@@ -1,5 +1,5 @@
 //! Telemetry: the robot's state sampled at a fixed simulated rate into a bounded history,
-//! and the trace hash over every sample (SPEC §6: "the same scenario gives the same trace
+//! and the trace hash over every sample (spec §6: "the same scenario gives the same trace
 //! bit for bit, natively and in wasm").
 
 use std::collections::VecDeque;

@@ -1,4 +1,4 @@
-//! The LocalPathPlanning RT-component (seed 000, SPEC §3): receives the map, start/goal and
+//! The LocalPathPlanning RT-component (seed 000, spec §3): receives the map, start/goal and
 //! the global grid path through its `LocalPath` service, the robot's position and deviation
 //! through data ports, and sends the (locally replanned) grid path and its control points
 //! to the GUI, DriveControl and bump detection.
@@ -9,7 +9,7 @@
 //! given and raises flags; the work happens in `on_execute`. Every call returns a `Result`:
 //! bad input gets an error naming the problem and changes nothing held.
 //!
-//! # When a local plan is made (000 §5.2.4, SPEC §3)
+//! # When a local plan is made (000 §5.2.4, spec §3)
 //!
 //! A *replan request* flag (000 §5.2.4.5 "局所経路の作成を行うためのフラグ") is raised by:
 //! - a new `GlobalPathCourse` (spec §3 Decision 0.2): the potential-field plan is made from
@@ -269,7 +269,7 @@ impl LocalPathPlanning {
         self.planned_with = None;
     }
 
-    /// `SafeMode` (000 §3.2.2.1 (3), T.B.D. in the seed). **Decision (SPEC §3)**: halt — the
+    /// `SafeMode` (000 §3.2.2.1 (3), T.B.D. in the seed). **Decision (spec §3)**: halt — the
     /// next tick sends an empty path and empty control points, and nothing is planned or
     /// sent until the next `SetPosition`.
     pub fn safe_mode(&mut self) {
@@ -280,7 +280,7 @@ impl LocalPathPlanning {
         self.retry_at_ns = None;
     }
 
-    /// `SetMap` (000 §3.2.2.1 (4), §5.2.4.1, SPEC §2): `map_data[x + y · map_length_x]`, 0
+    /// `SetMap` (000 §3.2.2.1 (4), §5.2.4.1, spec §2): `map_data[x + y · map_length_x]`, 0
     /// free / 1 obstacle. Refused (the old map stays) for a wrong length, a value other than
     /// 0/1, a dimension < 1 or a bad `grid_size`.
     pub fn set_map(
@@ -335,7 +335,7 @@ impl LocalPathPlanning {
     /// `GlobalPathCourse` (000 §3.2.2.1 (6), §5.2.4.3): holds the grid path (start first);
     /// the next tick makes its control points and sends them (once start/goal are held).
     /// Refused (nothing changes) unless both arrays have `num` entries, `num` ≥ 1, every cell
-    /// is in the map and consecutive cells are 8-neighbours (SPEC §3 Decision).
+    /// is in the map and consecutive cells are 8-neighbours (spec §3 Decision).
     pub fn global_path_course(
         &mut self,
         grid_path_x: &[i32],
@@ -535,7 +535,7 @@ impl LocalPathPlanning {
         };
     }
 
-    /// SPEC §3 step 1 (000 §5.2.4.4).
+    /// spec §3 step 1 (000 §5.2.4.4).
     fn update_current(&mut self, p: &TimedPosition, params: &LocalPathPlanningParams) {
         let pose = Pose::new(p.x, p.y, p.theta);
         if !pose.is_finite() {
@@ -726,7 +726,7 @@ impl Component for LocalPathPlanning {
         Ok(())
     }
 
-    /// 000 §5.2.4, SPEC §3 "Behaviour on every tick".
+    /// 000 §5.2.4, spec §3 "Behaviour on every tick".
     fn on_execute(&mut self, tick: &Tick) -> ReturnCode {
         let params = *self.config.params();
         if self.send_empty {

@@ -16,7 +16,7 @@ define_parameters! {
             "deviation from the path that triggers a local replan"),
         /// `dmin` \[m\]: closest allowed approach to an obstacle (障害物に近づくことができる距離).
         /// The seed's table gives its unit as "-"; it is compared with obstacle distances in
-        /// metres, so SPEC §3 gives `m`.
+        /// metres, so spec §3 gives `m`.
         dmin: f64 = ("dmin", "m", 0.5, 0.0, f64::INFINITY, Always,
             "closest allowed approach to an obstacle"),
         /// `PostureConsiderationLevel` \[%\]: weight of the start/goal posture
@@ -50,6 +50,6 @@ pub struct LocalPathFlags {
     pub arrived: bool,
     /// A local replan is requested (000 §5.2.4.5, §5.2.4.6).
     pub replan_request: bool,
-    /// SafeMode: halted until the next `SetPosition` (SPEC §3 Decision).
+    /// SafeMode: halted until the next `SetPosition` (spec §3 Decision).
     pub safe_mode: bool,
 }
