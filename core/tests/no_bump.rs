@@ -77,11 +77,24 @@ fn pairs(map: &GridMap, dmin: f64, n: usize, seed: u64) -> Vec<(Pose, Pose)> {
         .into_iter()
         .filter(|&p| region[map.index(p)] == biggest)
         .collect();
-    let span = g * map.width().max(map.height()) as f64 / 3.0;
+    // A third of the region's extent (a real map's free space is often a small part of its
+    // image, the rest unknown).
+    let extent = |axis: fn(&(usize, usize)) -> usize| {
+        let lo = points.iter().map(axis).min().unwrap_or(0);
+        let hi = points.iter().map(axis).max().unwrap_or(0);
+        (hi - lo) as f64 * g
+    };
+    let span = extent(|p| p.0).max(extent(|p| p.1)) / 3.0;
     let centre = |(x, y): (usize, usize)| (ox + (x as f64 + 0.5) * g, oy + (y as f64 + 0.5) * g);
     let mut rng = Lcg(seed);
     let mut out = Vec::new();
+    let mut tries = 0;
     while out.len() < n {
+        tries += 1;
+        assert!(
+            tries < 100_000,
+            "no {n} pairs {span:.1} m apart on this map"
+        );
         let a = centre(points[rng.next() as usize % points.len()]);
         let b = centre(points[rng.next() as usize % points.len()]);
         if libm::hypot(a.0 - b.0, a.1 - b.1) < span {
