@@ -567,9 +567,9 @@ impl Session {
             let Ok(config) = wiring.config(kind) else {
                 continue;
             };
-            let period_s = ec
-                .period_of(kind.index())
-                .map_or(f64::NAN, |ticks| (ticks * ec.base_period_ns()) as f64 * 1e-9);
+            let period_s = ec.period_of(kind.index()).map_or(f64::NAN, |ticks| {
+                (ticks * ec.base_period_ns()) as f64 * 1e-9
+            });
             let params = config
                 .specs()
                 .iter()
@@ -614,11 +614,18 @@ impl Session {
                 } else {
                     (p.p_gain_r, p.d_gain_r)
                 };
-                GainWarning::check(pg, dg, dt).map(|w| w.to_string())
+                // An unstable loop is P's doing, a limp wheel D's: each beside its gain.
+                match GainWarning::check(pg, dg, dt)? {
+                    w @ GainWarning::Unstable { .. } if name.starts_with('P') => Some(w),
+                    w @ GainWarning::Limp { .. } if name.starts_with('D') => Some(w),
+                    _ => None,
+                }
+                .map(|w| w.to_string())
             }
             (ComponentKind::LocalPathPlanning, "dmin") => wiring.clearance_warning().map(|w| {
                 let text = w.to_string();
-                text.strip_prefix("warning: ").map_or(text.clone(), str::to_owned)
+                text.strip_prefix("warning: ")
+                    .map_or(text.clone(), str::to_owned)
             }),
             _ => None,
         }

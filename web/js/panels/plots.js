@@ -255,10 +255,14 @@ export function createPlots(root, app) {
     ctx.setLineDash([]);
     canvas.dataset.offScale = String(beyond);
     if (beyond) {
+      // Inside the frame's bottom left, on a white box, clear of the legend.
+      const note = 'commanded: beyond the scale';
+      const w = ctx.measureText(note).width + 8;
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
+      ctx.fillRect(m.l + 2, m.t + ph - 16, w, 14);
       ctx.fillStyle = '#c92a2a';
-      ctx.textAlign = 'right';
-      ctx.fillText('commanded beyond the scale, cut at the frame', m.l + pw - 4, m.t + 8);
       ctx.textAlign = 'left';
+      ctx.fillText(note, m.l + 6, m.t + ph - 9);
     }
     if (ts.length === 0) {
       ctx.fillStyle = MUTED;
