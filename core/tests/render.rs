@@ -897,7 +897,10 @@ fn after_arrival_the_drawn_direction_is_the_one_asked_for() {
         }
     }
     assert_eq!(run.report().outcome.kind, OutcomeKind::Arrived);
-    assert!(backward_near_the_goal, "the planner chose backward near the goal");
+    assert!(
+        backward_near_the_goal,
+        "the planner chose backward near the goal"
+    );
     let s = run.system();
     assert!(s.mission().is_arrived());
     let mut buffers = FieldBuffers::default();
