@@ -340,7 +340,7 @@ mod tests {
                 y: vec![0],
                 value: vec![1, 1],
                 num: 2,
-                tm: tm
+                tm
             }),
             Err(MapError::UpdateLength { array: "Y", .. })
         ));
@@ -350,7 +350,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 1],
                 num: 2,
-                tm: tm
+                tm
             }),
             Err(MapError::CellOutside { x: 2, .. })
         ));
@@ -360,7 +360,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 2],
                 num: 2,
-                tm: tm
+                tm
             }),
             Err(MapError::BadCellValue { what: "value", .. })
         ));
@@ -371,7 +371,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 1],
                 num: 2,
-                tm: tm
+                tm
             }),
             Ok(2)
         );
