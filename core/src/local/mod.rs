@@ -5,13 +5,16 @@
 //! Architecture invariant: nothing here knows about ports, ticks or flags; every function
 //! takes the map and plain values and returns a value or a [`crate::errors::LocalPathError`].
 
+pub mod angle;
 mod control_points;
+mod field_queue;
 mod local_path;
 mod local_target;
 mod merge;
 mod planner;
 mod potential_field;
 mod radix_queue;
+pub mod reference;
 
 pub use control_points::{control_points, corner_cells, thin_collinear};
 pub use local_path::descend;
