@@ -45,7 +45,8 @@ pub struct GlobalPathPlanning {
     instance_name: String,
     config: Configuration<GlobalPathPlanningParams>,
     map: Option<GridMap>,
-    /// The planner for `map` and the last `dmin` used; dropped when the map changes.
+    /// The planner for `map` and the last `dmin` used; dropped when a new map is set, kept
+    /// up to date after `MapUpdate`s.
     planner: Option<AStar>,
     request: Option<(Pose, Pose)>,
     last_plan: Option<GridPlan>,
@@ -106,11 +107,8 @@ impl GlobalPathPlanning {
         tm: Time,
     ) -> crate::Result<usize> {
         let map = self.map.as_mut().ok_or(GlobalPlanningError::NoMap)?;
-        let changed = map.map_update(x, y, value, num, tm)?;
-        if changed > 0 {
-            self.planner = None;
-        }
-        Ok(changed)
+        // The planner is brought up to date at the next plan (`AStar::sync`).
+        Ok(map.map_update(x, y, value, num, tm)?)
     }
 
     /// Requests a plan from `start` to `goal` (map frame, metres); it is made at the next
@@ -155,7 +153,10 @@ impl GlobalPathPlanning {
         }
         let dmin = self.config.params().dmin;
         let mut planner = match self.planner.take() {
-            Some(p) if p.dmin().to_bits() == dmin.to_bits() => p,
+            Some(mut p) if p.dmin().to_bits() == dmin.to_bits() => {
+                p.sync(map);
+                p
+            }
             _ => AStar::new(map, dmin)?,
         };
         let result = planner.plan(cells[0], cells[1]);

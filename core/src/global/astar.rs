@@ -1,29 +1,41 @@
-//! A* on the 8-connected grid (SPEC §5 "GlobalPathPlanning"): octile costs, no corner
-//! cutting, optimal, deterministic.
+//! Optimal paths on the 8-connected grid for GlobalPathPlanning (SPEC §5): octile costs, no
+//! corner cutting, deterministic. A* over *jump points* (Harabor & Grastien, "Online Graph
+//! Pruning for Pathfinding on Grid Maps", AAAI 2011; the rules for grids without corner
+//! cutting as in "Improving Jump Point Search", ICAPS 2014).
 //!
 //! - **Moves**: the eight neighbours; a straight step costs 1, a diagonal √2, and a diagonal
 //!   is allowed only when both orthogonal cells it passes are passable (no corner cutting,
 //!   as the MovingAI benchmark counts).
 //! - **Costs** are exact ([`OctileCost`]): step counts, compared through integer keys that
 //!   order them exactly as the real numbers `a + b·√2`, so no rounding ever decides.
-//! - **Heuristic**: the octile distance, admissible and consistent, so a cell is expanded at
-//!   most once and the goal's cost is optimal when it is taken from the queue.
-//! - **Ties** (SPEC §6): cells with equal `f = g + h` leave the queue in an order fixed by
-//!   the order they entered it (the last one in first, as far as the radix heap's buckets
-//!   allow); neighbours are visited in a fixed order and a cell's parent changes only on a
-//!   strictly lower cost. The same map, start and goal give the same path everywhere.
-//! - **Speed**: one byte per cell holds everything the inner loop reads about a neighbour
-//!   (passable, search generation, expanded, parent move), with a blocked border so no
-//!   neighbour needs a bounds test; the marks of a search are not cleared but outdated by
-//!   the next generation (cleared only every 7 searches); `g` is recovered from the queue's
-//!   `f` when a cell is expanded; and the open list is a radix heap ([`super::heap`]), which
-//!   suits A*'s never-decreasing `f`: adding is O(1) and taking the minimum cheap.
+//! - **Jump points**: from an expanded cell, each direction the pruning rules keep is
+//!   followed in a straight line until a cell where an optimal path may have to turn (a
+//!   *forced* neighbour: a side cell that opens up where the cell behind it was blocked),
+//!   the goal, or a wall; a diagonal stops where one of its two straight components would.
+//!   Only those cells enter the open list. Every optimal path has a counterpart through
+//!   jump points of equal length, so the result stays optimal (checked against every
+//!   MovingAI problem and against Dijkstra on random maps); the cells between jump points
+//!   are straight runs and are filled in when the path is read back.
+//! - **Heuristic**: the octile distance, admissible and consistent (also along jumps), so a
+//!   cell is expanded at most once and the goal's cost is optimal when it is taken.
+//! - **Ties** (SPEC §6): equal `f = g + h` leave the queue in an order fixed by the order
+//!   they entered it (the radix heap's), directions are tried in a fixed order, and a
+//!   cell's parent changes only on a strictly lower cost: the same map, start and goal give
+//!   the same path everywhere. Among equally short paths, the jump-point search prefers
+//!   straight runs; [`AStar::plan_cellwise`] (plain A*, every cell a node) is kept for
+//!   comparison and may pick another path of the same length.
+//! - **Speed**: one byte per cell (passable, search generation, expanded, arrival move),
+//!   with a blocked border so no step needs a bounds test, and a transposed copy of the
+//!   passable flags so vertical runs read memory in order; marks are outdated by the next
+//!   generation instead of cleared; `g` is recovered from the queue's `f`; the open list is
+//!   a radix heap ([`super::heap`]). After a `MapUpdate` the planner is brought up to date
+//!   where the map's distances changed ([`AStar::sync`]) instead of being rebuilt.
 
 use super::cost::OctileCost;
 use super::heap::{RadixHeap, RadixKey};
 use crate::errors::GlobalPlanningError;
 use crate::interfaces::GlobalPathCourse;
-use crate::map::{Cell, GridMap};
+use crate::map::{Cell, GridMap, MapStamp};
 
 /// The eight moves `(dx, dy)`: east, north, west, south, then the diagonals NE, NW, SW, SE.
 /// Diagonal `4 + k` lies between orthogonals `k` and `(k + 1) % 4`.
@@ -99,10 +111,11 @@ impl Key for u128 {
     }
 }
 
-/// Best costs and the open list, for one key width.
+/// Best costs, parents (jump points) and the open list, for one key width.
 #[derive(Debug, Clone)]
 struct Scratch<K> {
     g: Vec<K>,
+    parent: Vec<u32>,
     open: RadixHeap<K>,
 }
 
@@ -110,6 +123,7 @@ impl<K: RadixKey> Default for Scratch<K> {
     fn default() -> Self {
         Self {
             g: Vec::new(),
+            parent: Vec::new(),
             open: RadixHeap::default(),
         }
     }
@@ -144,6 +158,11 @@ pub struct AStar {
     passable_count: usize,
     /// `(width + 2) × (height + 2)` cell bytes, x fastest, border blocked.
     cells: Vec<u8>,
+    /// The passable cells as bits, row by row and column by column (padded, border
+    /// blocked), for the straight runs of the jumps: 64 cells a word.
+    bits: BitLines,
+    /// The map state `cells` was made from.
+    stamp: MapStamp,
     generation: u8,
     small: Scratch<u64>,
     large: Scratch<u128>,
@@ -156,28 +175,68 @@ impl AStar {
             return Err(GlobalPlanningError::BadDmin { value: dmin });
         }
         let (w, h) = (map.width(), map.height());
-        let stride = w + 2;
-        let mut cells = vec![0u8; stride * (h + 2)];
-        let mut passable_count = 0;
-        for (y, row) in map.distances().chunks_exact(w).enumerate() {
-            let dst = &mut cells[(y + 1) * stride + 1..(y + 1) * stride + 1 + w];
-            for (c, &d) in dst.iter_mut().zip(row) {
-                if !crate::map::within_dmin(d, dmin) {
-                    *c = PASSABLE;
-                    passable_count += 1;
-                }
-            }
-        }
-        Ok(Self {
+        let mut planner = Self {
             width: w,
             height: h,
             dmin,
-            passable_count,
-            cells,
+            passable_count: 0,
+            cells: vec![0u8; (w + 2) * (h + 2)],
+            bits: BitLines::new(w + 2, h + 2),
+            stamp: map.stamp(),
             generation: 0,
             small: Scratch::default(),
             large: Scratch::default(),
-        })
+        };
+        planner.mark(map, 0, 0, w, h);
+        Ok(planner)
+    }
+
+    /// Brings the planner up to date with `map` (the same map after `MapUpdate`s, or
+    /// another of the same size), keeping its scratch space: only the cells whose obstacle
+    /// distance changed since are marked again (the map's change log), or all of them if
+    /// that cannot be told. A map of another size gives a new planner.
+    pub fn sync(&mut self, map: &GridMap) {
+        if map.width() != self.width || map.height() != self.height {
+            if let Ok(fresh) = Self::new(map, self.dmin) {
+                *self = fresh;
+            }
+            return;
+        }
+        let stamp = map.stamp();
+        if stamp == self.stamp {
+            return;
+        }
+        match map.distance_changes_since(self.stamp) {
+            Some(rects) => {
+                for r in rects {
+                    self.mark(map, r.x0, r.y0, r.x1, r.y1);
+                }
+            }
+            None => self.mark(map, 0, 0, self.width, self.height),
+        }
+        self.stamp = stamp;
+    }
+
+    /// Marks the cells `[x0, x1) × [y0, y1)` passable or not from the map's distances
+    /// (clearing their search marks), in both layouts, and keeps the count.
+    fn mark(&mut self, map: &GridMap, x0: usize, y0: usize, x1: usize, y1: usize) {
+        let w = self.width;
+        let stride = w + 2;
+        let dist = map.distances();
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let pass = !crate::map::within_dmin(dist[x + y * w], self.dmin);
+                let p = (x + 1) + (y + 1) * stride;
+                let before = self.cells[p] & PASSABLE != 0;
+                self.cells[p] = if pass { PASSABLE } else { 0 };
+                self.bits.set(x + 1, y + 1, pass);
+                match (before, pass) {
+                    (false, true) => self.passable_count += 1,
+                    (true, false) => self.passable_count -= 1,
+                    _ => {}
+                }
+            }
+        }
     }
 
     /// Cells in x.
@@ -238,22 +297,41 @@ impl AStar {
             && (dx == 0 || dy == 0 || (self.is_passable(bx, ay) && self.is_passable(ax, by)))
     }
 
-    /// The optimal path from `start` to `goal`.
+    /// The optimal path from `start` to `goal`, by jump points.
     ///
     /// Errors: a cell outside the map, a blocked start or goal, or no path.
     pub fn plan(&mut self, start: Cell, goal: Cell) -> Result<GridPlan, GlobalPlanningError> {
-        // Every cost met has at most (passable cells − 1) steps of g plus max(width, height)
-        // steps of h.
-        let bound = self.passable_count + self.width.max(self.height);
-        self.plan_with(start, goal, bound > OctileCost::SMALL_KEY_MAX as usize)
+        let wide = self.wide();
+        self.plan_with(start, goal, wide, true)
     }
 
-    /// [`AStar::plan`] with the `u64` or (`wide`) the `u128` cost key.
+    /// The optimal path from `start` to `goal` by plain A*: every cell a node (the search
+    /// as first written, kept to compare with). The same length as [`AStar::plan`]; where
+    /// several paths are equally short it may pick another.
+    pub fn plan_cellwise(
+        &mut self,
+        start: Cell,
+        goal: Cell,
+    ) -> Result<GridPlan, GlobalPlanningError> {
+        let wide = self.wide();
+        self.plan_with(start, goal, wide, false)
+    }
+
+    /// Whether costs need the `u128` key: every cost met has at most (passable cells − 1)
+    /// steps of g plus max(width, height) steps of h.
+    fn wide(&self) -> bool {
+        let bound = self.passable_count + self.width.max(self.height);
+        bound > OctileCost::SMALL_KEY_MAX as usize
+    }
+
+    /// [`AStar::plan`] (`jump`) or [`AStar::plan_cellwise`] with the `u64` or (`wide`) the
+    /// `u128` cost key.
     fn plan_with(
         &mut self,
         start: Cell,
         goal: Cell,
         wide: bool,
+        jump: bool,
     ) -> Result<GridPlan, GlobalPlanningError> {
         for (which, cell) in [("start", start), ("goal", goal)] {
             if cell.0 >= self.width || cell.1 >= self.height {
@@ -281,26 +359,34 @@ impl AStar {
         self.generation += 1;
         let s = self.padded_index(start);
         let t = self.padded_index(goal);
-        let stride = self.stride();
         let mut search = Search {
             cells: &mut self.cells,
-            stride,
+            bits: &self.bits,
+            stride: self.width + 2,
             generation: self.generation,
             goal,
         };
-        let found = if wide {
-            search.run(s, t, start, &mut self.large)
-        } else {
-            search.run(s, t, start, &mut self.small)
+        let found = match (wide, jump) {
+            (false, true) => search.jump(s, t, start, &mut self.small),
+            (true, true) => search.jump(s, t, start, &mut self.large),
+            (false, false) => search.run(s, t, start, &mut self.small),
+            (true, false) => search.run(s, t, start, &mut self.large),
         };
         let Some(expanded) = found else {
             return Err(GlobalPlanningError::NoPath { start, goal });
         };
-        Ok(self.path(s, t, expanded))
+        let parents = match (jump, wide) {
+            (false, _) => None,
+            (true, false) => Some(&self.small.parent[..]),
+            (true, true) => Some(&self.large.parent[..]),
+        };
+        Ok(self.path(s, t, expanded, parents))
     }
 
-    /// Follows the parent moves back from the goal and counts the steps.
-    fn path(&self, s: usize, t: usize, expanded: usize) -> GridPlan {
+    /// Reads the path back from the goal: along each cell's arrival move, one step at a
+    /// time, to its parent (`parents`: the jump point it was reached from; `None`: the
+    /// neighbour behind it), and counts the steps.
+    fn path(&self, s: usize, t: usize, expanded: usize, parents: Option<&[u32]>) -> GridPlan {
         let stride = self.stride() as isize;
         let mut cells = vec![self.cell_of(t)];
         let mut cost = OctileCost::ZERO;
@@ -308,14 +394,18 @@ impl AStar {
         while p != s {
             let k = usize::from(self.cells[p] & MOVE_MASK);
             let (dx, dy) = MOVES[k];
-            p = p.wrapping_add_signed(-(isize::from(dx) + isize::from(dy) * stride));
-            cells.push(self.cell_of(p));
-            cost = cost
-                + if k < 4 {
-                    OctileCost::STRAIGHT
-                } else {
-                    OctileCost::DIAGONAL
-                };
+            let back = -(isize::from(dx) + isize::from(dy) * stride);
+            let step = if k < 4 {
+                OctileCost::STRAIGHT
+            } else {
+                OctileCost::DIAGONAL
+            };
+            let parent = parents.map_or(p.wrapping_add_signed(back), |ps| ps[p] as usize);
+            while p != parent {
+                p = p.wrapping_add_signed(back);
+                cells.push(self.cell_of(p));
+                cost = cost + step;
+            }
         }
         cells.reverse();
         GridPlan {
@@ -329,9 +419,291 @@ impl AStar {
 /// One search over the cell bytes.
 struct Search<'a> {
     cells: &'a mut [u8],
+    bits: &'a BitLines,
     stride: usize,
     generation: u8,
     goal: Cell,
+}
+
+/// The passable cells of the padded grid as bits: each row (x fastest) and each column
+/// (y fastest) a line of 64-bit words, bit `i % 64` of word `i / 64` for position `i`; the
+/// padding and the bits past a line's end are 0 (blocked).
+#[derive(Debug, Clone)]
+struct BitLines {
+    row_words: usize,
+    column_words: usize,
+    rows: Vec<u64>,
+    columns: Vec<u64>,
+}
+
+impl BitLines {
+    fn new(width: usize, height: usize) -> Self {
+        let (row_words, column_words) = (width.div_ceil(64), height.div_ceil(64));
+        Self {
+            row_words,
+            column_words,
+            rows: vec![0; row_words * height],
+            columns: vec![0; column_words * width],
+        }
+    }
+
+    fn set(&mut self, x: usize, y: usize, passable: bool) {
+        let put = |word: &mut u64, bit: usize| {
+            if passable {
+                *word |= 1 << bit;
+            } else {
+                *word &= !(1 << bit);
+            }
+        };
+        put(&mut self.rows[y * self.row_words + x / 64], x % 64);
+        put(&mut self.columns[x * self.column_words + y / 64], y % 64);
+    }
+
+    fn row(&self, y: usize) -> &[u64] {
+        &self.rows[y * self.row_words..(y + 1) * self.row_words]
+    }
+
+    fn column(&self, x: usize) -> &[u64] {
+        &self.columns[x * self.column_words..(x + 1) * self.column_words]
+    }
+}
+
+/// Follows a straight line from position `from` (exclusive) in direction `forward` (or
+/// backward) along bit line `line`, with the parallel lines `a` and `b` on either side;
+/// returns the first position that is blocked (`None`), or else `goal` or has a forced
+/// neighbour — a side cell passable where the one behind it is not. 64 positions a step;
+/// the lines end in blocked positions, so it ends.
+#[inline(always)]
+fn run_line(
+    line: &[u64],
+    a: &[u64],
+    b: &[u64],
+    from: usize,
+    forward: bool,
+    goal: usize,
+) -> Option<usize> {
+    let word = |l: &[u64], i: usize| l.get(i).copied().unwrap_or(0);
+    if forward {
+        let start = from + 1;
+        let mut wi = start / 64;
+        let mut mask = u64::MAX << (start % 64);
+        loop {
+            // Side opens at i: passable at i, blocked at i − 1 (the top bit of the word
+            // before carries in at bit 0).
+            let opens = |l: &[u64]| {
+                let v = word(l, wi);
+                let before = (v << 1) | (if wi > 0 { word(l, wi - 1) >> 63 } else { 0 });
+                v & !before
+            };
+            let blocked = !word(line, wi) & mask;
+            let mut stop = blocked | ((opens(a) | opens(b)) & mask);
+            if goal / 64 == wi && goal >= start {
+                stop |= 1 << (goal % 64);
+            }
+            if stop != 0 {
+                let bit = stop.trailing_zeros();
+                return (blocked & (1 << bit) == 0).then_some(wi * 64 + bit as usize);
+            }
+            wi += 1;
+            mask = u64::MAX;
+        }
+    } else {
+        let start = from - 1;
+        let mut wi = start / 64;
+        let mut mask = u64::MAX >> (63 - start % 64);
+        loop {
+            // Side opens at i: passable at i, blocked at i + 1.
+            let opens = |l: &[u64]| {
+                let v = word(l, wi);
+                let after = (v >> 1) | (word(l, wi + 1) << 63);
+                v & !after
+            };
+            let blocked = !word(line, wi) & mask;
+            let mut stop = blocked | ((opens(a) | opens(b)) & mask);
+            if goal / 64 == wi && goal <= start {
+                stop |= 1 << (goal % 64);
+            }
+            if stop != 0 {
+                let bit = 63 - stop.leading_zeros();
+                return (blocked & (1 << bit) == 0).then_some(wi * 64 + bit as usize);
+            }
+            wi -= 1;
+            mask = u64::MAX;
+        }
+    }
+}
+
+impl Search<'_> {
+    #[inline(always)]
+    fn passable(&self, p: usize) -> bool {
+        self.cells[p] & PASSABLE != 0
+    }
+
+    /// The jump point reached from padded index `p` by straight move `k` (0 E, 1 N, 2 W,
+    /// 3 S), and the number of steps.
+    #[inline(always)]
+    fn jump_straight(&self, p: usize, k: usize, t: usize) -> Option<(usize, u32)> {
+        let s = self.stride;
+        let (px, py) = (p % s, p / s);
+        let b = self.bits;
+        if k == 0 || k == 2 {
+            let goal = if t / s == py { t % s } else { usize::MAX };
+            let x = run_line(b.row(py), b.row(py + 1), b.row(py - 1), px, k == 0, goal)?;
+            Some((py * s + x, x.abs_diff(px) as u32))
+        } else {
+            let goal = if t % s == px { t / s } else { usize::MAX };
+            let y = run_line(
+                b.column(px),
+                b.column(px + 1),
+                b.column(px - 1),
+                py,
+                k == 1,
+                goal,
+            )?;
+            Some((y * s + px, y.abs_diff(py) as u32))
+        }
+    }
+
+    /// The jump point reached from `p` by diagonal move `k` (4 NE, 5 NW, 6 SW, 7 SE): each
+    /// diagonal step needs both cells beside it passable; it stops at the goal or where a
+    /// straight run along either of its components finds a jump point.
+    #[inline(always)]
+    fn jump_diagonal(
+        &self,
+        p: usize,
+        k: usize,
+        t: usize,
+        offsets: &[isize; 8],
+    ) -> Option<(usize, u32)> {
+        // The straight components of diagonal 4 + j: j and (j + 1) % 4.
+        let (a, b) = (k - 4, (k - 3) % 4);
+        let (oa, ob) = (offsets[a], offsets[b]);
+        let mut i = p;
+        let mut n = 0u32;
+        loop {
+            if !(self.passable(i.wrapping_add_signed(oa))
+                && self.passable(i.wrapping_add_signed(ob)))
+            {
+                return None;
+            }
+            i = i.wrapping_add_signed(offsets[k]);
+            n += 1;
+            if !self.passable(i) {
+                return None;
+            }
+            if i == t
+                || self.jump_straight(i, a, t).is_some()
+                || self.jump_straight(i, b, t).is_some()
+            {
+                return Some((i, n));
+            }
+        }
+    }
+
+    /// A* over jump points from padded index `s` to `t`; returns the number of expanded
+    /// jump points if the goal was reached (its arrival moves are then in the cell bytes,
+    /// its parents in `scratch.parent`).
+    fn jump<K: Key>(
+        &mut self,
+        s: usize,
+        t: usize,
+        start: Cell,
+        scratch: &mut Scratch<K>,
+    ) -> Option<usize> {
+        let n = self.cells.len();
+        if scratch.g.len() < n {
+            scratch.g.resize(n, K::default());
+        }
+        if scratch.parent.len() < n {
+            scratch.parent.resize(n, 0);
+        }
+        let Scratch { g, parent, open } = scratch;
+        open.clear();
+        let tag = PASSABLE | (self.generation << GENERATION_SHIFT);
+        let stride = self.stride;
+        let offsets: [isize; 8] =
+            MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride as isize);
+        let straight = K::of(OctileCost::STRAIGHT);
+        let diagonal = K::of(OctileCost::DIAGONAL);
+        let (gx, gy) = (self.goal.0 as u32, self.goal.1 as u32);
+        let (unit, extra) = (straight, diagonal - straight);
+        let heuristic = |x: u32, y: u32| {
+            let (dx, dy) = (x.abs_diff(gx), y.abs_diff(gy));
+            K::times(unit, dx.max(dy)) + K::times(extra, dx.min(dy))
+        };
+        self.cells[s] = tag;
+        g[s] = K::default();
+        parent[s] = s as u32;
+        open.push(heuristic(start.0 as u32, start.1 as u32), s as u32)
+            .ok()?;
+        let mut expanded = 0usize;
+        while let Some((f, node)) = open.pop() {
+            let p = node as usize;
+            if self.cells[p] & CLOSED != 0 {
+                continue;
+            }
+            self.cells[p] |= CLOSED;
+            expanded += 1;
+            if p == t {
+                return Some(expanded);
+            }
+            let (px, py) = (p as u32 % stride as u32, p as u32 / stride as u32);
+            let gp = f - heuristic(px - 1, py - 1);
+            let pass = |o: isize| self.cells[p.wrapping_add_signed(o)] >> 7;
+            // Bit k: orthogonal move k leads to a passable cell.
+            let orth = pass(offsets[0])
+                | pass(offsets[1]) << 1
+                | pass(offsets[2]) << 2
+                | pass(offsets[3]) << 3;
+            // Diagonal 4 + j needs orthogonals j and (j + 1) % 4 (no corner cutting).
+            let diagonals = orth & ((orth >> 1) | ((orth & 1) << 3));
+            let all = orth | (diagonals << 4);
+            // The directions kept, by the move that reached p.
+            let mut moves = if p == s {
+                all
+            } else {
+                let k = usize::from(self.cells[p] & MOVE_MASK);
+                if k >= 4 {
+                    // Diagonal 4 + j: its two components and itself.
+                    let (a, b) = (k - 4, (k - 3) % 4);
+                    all & ((1 << a) | (1 << b) | (1 << k))
+                } else {
+                    // Straight k: ahead, the two sides, and the two diagonals between ahead
+                    // and a side (the diagonal between orthogonals j and j + 1 is 4 + j).
+                    let (left, right) = ((k + 1) % 4, (k + 3) % 4);
+                    all & ((1 << k)
+                        | (1 << left)
+                        | (1 << right)
+                        | (1 << (4 + k))
+                        | (1 << (4 + right)))
+                }
+            };
+            while moves != 0 {
+                let k = moves.trailing_zeros() as usize;
+                moves &= moves - 1;
+                let found = if k < 4 {
+                    self.jump_straight(p, k, t)
+                } else {
+                    self.jump_diagonal(p, k, t, &offsets)
+                };
+                let Some((m, steps)) = found else { continue };
+                let step = if k < 4 { straight } else { diagonal };
+                let ng = gp + K::times(step, steps);
+                let c = self.cells[m];
+                let reached = c & GENERATION_MASK == tag & GENERATION_MASK;
+                if reached && (c & CLOSED != 0 || ng >= g[m]) {
+                    continue;
+                }
+                self.cells[m] = tag | k as u8;
+                g[m] = ng;
+                parent[m] = p as u32;
+                let (mx, my) = (m as u32 % stride as u32 - 1, m as u32 / stride as u32 - 1);
+                // Never fails: f never decreases (consistent heuristic, exact keys).
+                open.push(ng + heuristic(mx, my), m as u32).ok()?;
+            }
+        }
+        None
+    }
 }
 
 impl Search<'_> {
@@ -447,15 +819,25 @@ mod tests {
         for i in 0..200 {
             let s = ((i * 7) % w, (i * 13) % h);
             let t = ((i * 29 + 5) % w, (i * 3 + 11) % h);
-            let narrow = astar.plan_with(s, t, false);
-            let wide = astar.plan_with(s, t, true);
+            let narrow = astar.plan_with(s, t, false, true);
+            let wide = astar.plan_with(s, t, true, true);
             assert_eq!(narrow, wide, "{s:?} → {t:?}");
+            let (narrow_cells, wide_cells) = (
+                astar.plan_with(s, t, false, false),
+                astar.plan_with(s, t, true, false),
+            );
+            assert_eq!(narrow_cells, wide_cells, "{s:?} → {t:?}");
+            // Jump points or every cell: the same length.
+            assert_eq!(
+                narrow.as_ref().map(|p| p.cost),
+                narrow_cells.as_ref().map(|p| p.cost)
+            );
             solved += usize::from(narrow.is_ok());
         }
         assert!(solved > 50, "{solved}");
         // More searches than generations: the marks were cleared and reused correctly.
         assert_eq!(
-            astar.plan_with((0, 0), (0, 0), false).is_ok(),
+            astar.plan_with((0, 0), (0, 0), false, true).is_ok(),
             map.cells()[0] == 0
         );
     }
