@@ -10,8 +10,10 @@
 //! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask test                every check CI runs, with a summary
+//! cargo xtask bench               the performance table (docs/performance.md)
 //! ```
 
+mod bench;
 mod fixtures;
 mod serve;
 mod test;
@@ -36,6 +38,10 @@ commands:
   serve [--port N]     copy the fixtures and serve web/ without building
   test                 cargo test, clippy (native and wasm32), rustfmt, the wasm tests
                        under Node and the browser end-to-end tests
+  bench [--no-wasm] [--no-browser]
+                       the performance table of docs/performance.md: criterion benches
+                       with their baselines, the same operations in wasm32 under Node,
+                       and the worst frame painting on a 1.7 M-cell map in Chromium
   help                 this text";
 
 fn main() -> ExitCode {
@@ -79,6 +85,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             }
             return Ok(test::run_all());
         }
+        "bench" => bench::run_all(rest)?,
         "help" | "--help" | "-h" => println!("{USAGE}"),
         other => return Err(format!("unknown command `{other}`\n\n{USAGE}").into()),
     }

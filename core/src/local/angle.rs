@@ -25,34 +25,35 @@
 //! special cases kept as rare, predictable branches). `f64::sqrt`-free, `libm`-free: plain
 //! IEEE arithmetic, so the same on every target (SPEC §6).
 
+// The constants of `s_atan.c` and `e_atan2.c`, by their bits (as their comments give them).
 const ATANHI: [f64; 5] = [
     0.0,
-    4.636_476_090_008_060_935_15e-1,
-    7.853_981_633_974_482_789_99e-1,
-    9.827_937_232_473_290_540_82e-1,
-    1.570_796_326_794_896_558_00e0,
+    f64::from_bits(0x3FDD_AC67_0561_BB4F), // atan(0.5) hi
+    f64::from_bits(0x3FE9_21FB_5444_2D18), // atan(1.0) hi
+    f64::from_bits(0x3FEF_730B_D281_F69B), // atan(1.5) hi
+    f64::from_bits(0x3FF9_21FB_5444_2D18), // atan(inf) hi
 ];
 
 const ATANLO: [f64; 5] = [
     0.0,
-    2.269_877_745_296_168_709_24e-17,
-    3.061_616_997_868_383_017_93e-17,
-    1.390_331_103_123_099_845_16e-17,
-    6.123_233_995_736_766_035_87e-17,
+    f64::from_bits(0x3C7A_2B7F_222F_65E2),
+    f64::from_bits(0x3C81_A626_3314_5C07),
+    f64::from_bits(0x3C70_0788_7AF0_CBBD),
+    f64::from_bits(0x3C91_A626_3314_5C07),
 ];
 
 const AT: [f64; 11] = [
-    3.333_333_333_333_293_180_27e-1,
-    -1.999_999_999_987_648_324_76e-1,
-    1.428_571_427_250_346_637_11e-1,
-    -1.111_111_040_546_235_578_80e-1,
-    9.090_887_133_436_506_561_96e-2,
-    -7.691_876_205_044_829_994_95e-2,
-    6.661_073_137_387_531_206_69e-2,
-    -5.833_570_133_790_573_486_45e-2,
-    4.976_877_994_615_932_360_17e-2,
-    -3.653_157_274_421_691_552_70e-2,
-    1.628_582_011_536_578_236_23e-2,
+    f64::from_bits(0x3FD5_5555_5555_550D),
+    f64::from_bits(0xBFC9_9999_9998_EBC4),
+    f64::from_bits(0x3FC2_4924_9200_83FF),
+    f64::from_bits(0xBFBC_71C6_FE23_1671),
+    f64::from_bits(0x3FB7_45CD_C54C_206E),
+    f64::from_bits(0xBFB3_B0F2_AF74_9A6D),
+    f64::from_bits(0x3FB1_0D66_A0D0_3D51),
+    f64::from_bits(0xBFAD_DE2D_52DE_FD9A),
+    f64::from_bits(0x3FA9_7B4B_2476_0DEB),
+    f64::from_bits(0xBFA2_B444_2C6A_6C2F),
+    f64::from_bits(0x3F90_AD3A_E322_DA11),
 ];
 
 /// The reductions' coefficients `(a, b, c, d)`: `x = (a·t + b) / (c·t + d)`.
@@ -64,8 +65,8 @@ const REDUCE: [[f64; 4]; 5] = [
     [0.0, -1.0, 1.0, 0.0],
 ];
 
-const PI: f64 = 3.141_592_653_589_793_116_0e0;
-const PI_LO: f64 = 1.224_646_799_147_353_177_2e-16;
+const PI: f64 = f64::from_bits(0x4009_21FB_5444_2D18);
+const PI_LO: f64 = f64::from_bits(0x3CA1_A626_3314_5C07);
 
 /// `atan(t)` for finite `t ≥ 0` below 2^66, as `libm::atan`.
 #[inline(always)]
@@ -149,7 +150,7 @@ mod tests {
             check((vx * s - vy * c).abs(), vx * c + vy * s);
         }
         for t in [
-            7.0 / 16.0,
+            7.0f64 / 16.0,
             11.0 / 16.0,
             19.0 / 16.0,
             39.0 / 16.0,
@@ -158,7 +159,7 @@ mod tests {
             1.5,
         ] {
             for k in -4i64..=4 {
-                let t = f64::from_bits((t as f64).to_bits().wrapping_add_signed(k));
+                let t = f64::from_bits(t.to_bits().wrapping_add_signed(k));
                 check(t, 1.0);
                 check(t, -1.0);
                 check(1.0, 1.0 / t);

@@ -197,7 +197,7 @@ impl FieldQueue {
         self.mask[slot / 64] &= !(1 << (slot % 64));
         core::mem::swap(&mut self.current, &mut self.ring[slot]);
         self.current
-            .sort_unstable_by(|a, b| b.order().cmp(&a.order()));
+            .sort_unstable_by_key(|e| core::cmp::Reverse(e.order()));
         Some(())
     }
 

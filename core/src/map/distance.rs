@@ -436,8 +436,8 @@ impl DistanceField {
             };
             // The cells to recompute, found by the outward scans.
             fresh.clear();
-            for x in x0..=x1 {
-                if m <= old_d2(out[x]) {
+            for (x, &d) in out.iter().enumerate().take(x1 + 1).skip(x0) {
+                if m <= old_d2(d) {
                     fresh.push(x);
                 }
             }
@@ -451,9 +451,9 @@ impl DistanceField {
                     fresh.push(x);
                 }
             }
-            for x in x1 + 1..width {
+            for (x, &d) in out.iter().enumerate().skip(x1 + 1) {
                 let dx = (x - x1) as u64;
-                let d2 = old_d2(out[x]);
+                let d2 = old_d2(d);
                 if dx * dx > d2 {
                     break;
                 }
