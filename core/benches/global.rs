@@ -1,7 +1,7 @@
-//! GlobalPathPlanning's planner on every MovingAI benchmark map in the shared data
+//! GlobalPathPlanning's planner (spec §5) on every MovingAI benchmark map in the shared data
 //! (`RTNAV_DATA`, else `../shared/data`; skipped with one line when it is not there), side by
 //! side with the `pathfinding` crate's `astar` on the same grid and rules (8 moves, octile
-//! costs, no corner cutting).
+//! costs, no corner cutting; `support/baseline.rs`).
 //!
 //! Criterion mode (default): for each map, one iteration solves a *stratified slice* of its
 //! scenarios — every `N`-th problem, starting one further on each iteration, so every bucket
@@ -14,10 +14,14 @@
 //!
 //! Full mode (`RTNAV_BENCH_FULL=1`): one pass over *every* scenario of every map with each
 //! planner, checking that both find paths of the same length, and a table of total times.
+//!
+//! The benchmark is external data (`movingai/` of `$RTNAV_DATA`, else `../shared/data`):
+//! without it this says on one line that it is skipped.
 
 #[path = "support/baseline.rs"]
 mod baseline;
 
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -167,9 +171,16 @@ fn full_mode(cases: &mut [Case]) {
 }
 
 fn main() {
-    let Some(data) = baseline::data_dir() else {
-        println!("global: skipped: no shared data (set RTNAV_DATA or put it at ../shared/data)");
-        return;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let data = match rtnav::data::data_dir(&root) {
+        Ok(dir) => dir,
+        Err(why) => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "SKIPPED the global benchmark (movingai/*): {why}"
+            );
+            return;
+        }
     };
     let mut cases = load(&data);
     if std::env::var_os("RTNAV_BENCH_FULL").is_some() {

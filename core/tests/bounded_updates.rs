@@ -1,4 +1,4 @@
-//! SPEC §2 and §5 after `MapUpdate`s, as the page paints them: brushes set and cleared on
+//! spec §2 and §5 after `MapUpdate`s, as the page paints them: brushes set and cleared on
 //! maps with long distances (sparse obstacles, so a change reaches far).
 //! - The obstacle distances, updated only where a change can reach, equal a map built
 //!   afresh from the same cells (proptest).
@@ -7,7 +7,7 @@
 
 use proptest::prelude::*;
 use rtnav::global::AStar;
-use rtnav::map::GridMap;
+use rtnav::map::{GridMap, MapUpdate};
 use rtnav::rtc::Time;
 
 fn sparse_map(w: usize, h: usize, seed: u64, per_mille: u64) -> GridMap {
@@ -32,9 +32,17 @@ fn brush(map: &mut GridMap, cx: usize, cy: usize, r: usize, v: bool, n: u32) {
             ys.push(y as i32);
         }
     }
-    let vs = vec![i16::from(v); xs.len()];
-    map.map_update(&xs, &ys, &vs, xs.len() as i32, Time { sec: n, nsec: 0 })
-        .unwrap();
+    let value = vec![i16::from(v); xs.len()];
+    let num = xs.len() as i32;
+    let tm = Time { sec: n, nsec: 0 };
+    map.map_update(&MapUpdate {
+        x: xs,
+        y: ys,
+        value,
+        num,
+        tm,
+    })
+    .unwrap();
 }
 
 proptest! {

@@ -1,4 +1,4 @@
-//! SPEC §3 step 4: the fast potential field equals the reference implementation
+//! spec §3 step 4: the fast potential field equals the reference implementation
 //! (`rtnav::local::reference`, the field as first written) bit for bit — every cell's
 //! potential, parts, length, state, parent and rank, the counts, and the descent — on random
 //! maps and requests (proptest), also when one field's buffers are reused across requests
@@ -9,7 +9,7 @@ use proptest::prelude::*;
 use rtnav::interfaces::Direction;
 use rtnav::local::reference::{self, ReferenceField};
 use rtnav::local::{CellState, FieldExtent, FieldRequest, NEIGHBOURS, PotentialField, descend};
-use rtnav::map::{Cell, GridMap};
+use rtnav::map::{Cell, GridMap, MapUpdate};
 use rtnav::rtc::Time;
 
 /// The descent as first written: the neighbour with the lowest `(G, rank)` key below the
@@ -228,8 +228,10 @@ proptest! {
                         }
                     }
                 }
-                let vs = vec![i16::from(v); xs.len()];
-                map.map_update(&xs, &ys, &vs, xs.len() as i32, Time { sec: n as u32, nsec: 0 })
+                let value = vec![i16::from(v); xs.len()];
+                let num = xs.len() as i32;
+                let tm = Time { sec: n as u32, nsec: 0 };
+                map.map_update(&MapUpdate { x: xs, y: ys, value, num, tm })
                     .unwrap();
             }
             let req = request(&map, k);
@@ -245,9 +247,14 @@ proptest! {
 fn marks_follow_the_map_not_its_size() {
     let open = GridMap::new(20, 20, 0.1, (0.0, 0.0), vec![0; 400]).unwrap();
     let mut walled = open.clone();
-    let xs: Vec<i32> = (0..20).collect();
     walled
-        .map_update(&xs, &[10; 20], &[1; 20], 20, Time::default())
+        .map_update(&MapUpdate {
+            x: (0..20).collect(),
+            y: vec![10; 20],
+            value: vec![1; 20],
+            num: 20,
+            tm: Time::default(),
+        })
         .unwrap();
     let req = FieldRequest {
         target: (10, 3),

@@ -7,8 +7,8 @@
 //!    are read back from `target/criterion/**/new/estimates.json`.
 //! 2. The same operations timed by one harness natively and compiled to wasm32 under Node
 //!    (`tests/perf.rs`): the wasm rows, as a ratio to native.
-//! 3. The browser: `tests/e2e/large_map.test.mjs` paints on the warehouse at 16× in Debian's
-//!    Chromium and reports the worst frame.
+//! 3. The browser: `tests/e2e/large_map.bench.mjs` paints on the warehouse at 16× in
+//!    Debian's Chromium (the page as `cargo xtask dist` writes it) and reports the worst frame.
 //!
 //! ```text
 //! cargo xtask bench [--no-wasm] [--no-browser]
@@ -19,13 +19,13 @@
 //! `target/bench/performance.md`.
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 
 use crate::Result;
+use crate::dist;
 use crate::serve::Background;
 use crate::tools::{self, cargo, cmd, run};
-use crate::wasm;
 
 /// Runs everything and prints the table.
 pub fn run_all(args: &[String]) -> Result {
@@ -37,7 +37,7 @@ pub fn run_all(args: &[String]) -> Result {
             other => return Err(format!("bench: unexpected argument `{other}`").into()),
         }
     }
-    let target = target_dir();
+    let target = tools::target_dir();
     let criterion_dir = target.join("criterion");
     for bench in ["interactive", "global"] {
         run(cargo().args([
@@ -69,11 +69,6 @@ pub fn run_all(args: &[String]) -> Result {
     std::fs::write(&record, &text)?;
     println!("\n(table written to {})", record.display());
     Ok(())
-}
-
-fn target_dir() -> PathBuf {
-    std::env::var_os("CARGO_TARGET_DIR")
-        .map_or_else(|| tools::repo_root().join("target"), PathBuf::from)
 }
 
 /// `(group, function)` → median in milliseconds, for every benchmark criterion has results
@@ -178,7 +173,9 @@ fn captured(c: &mut Command) -> Result<String> {
 /// The browser test's report: `(worst frame, median frame, worst step + render)` ms.
 type Frame = (f64, f64, f64);
 
-/// Builds the page and runs the large-map browser test; its `RTNAV-FRAME` report.
+/// Builds the page (release) as a dist folder, serves it and runs the large-map browser
+/// report (`tests/e2e/large_map.bench.mjs`: not a `.test.mjs`, so `cargo xtask test` leaves
+/// it out); its `RTNAV-FRAME` line.
 fn browser_frame() -> Result<Option<Frame>> {
     tools::ensure_node()?;
     tools::ensure_chromium()?;
@@ -187,11 +184,12 @@ fn browser_frame() -> Result<Option<Frame>> {
         .args(["ci", "--no-audit", "--no-fund"])
         .current_dir(&e2e)
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))?;
-    wasm::build(wasm::Profile::Release)?;
-    let server = Background::start()?;
+    let site = tools::target_dir().join("bench-site");
+    dist::build(&site)?;
+    let server = Background::start(&site)?;
     let text = captured(
         cmd("node")
-            .args(["--test", "large_map.test.mjs"])
+            .args(["--test", "large_map.bench.mjs"])
             .current_dir(&e2e)
             .env("RTNAV_URL", &server.url)
             .env("RTNAV_CHROMIUM", tools::CHROMIUM)

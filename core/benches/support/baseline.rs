@@ -1,11 +1,10 @@
 //! The `pathfinding` crate's A* on the same grid and rules as GlobalPathPlanning (8 moves,
 //! octile costs, no corner cutting; its costs are integers, straight 2^32 and diagonal
-//! round(√2 · 2^32)), and where the shared data is. For the benches only.
+//! round(√2 · 2^32)). For the benches only.
 
 #![allow(dead_code)]
 
 use std::hint::black_box;
-use std::path::PathBuf;
 
 use rtnav::global::AStar;
 use rtnav::map::Cell;
@@ -54,13 +53,4 @@ pub fn pathfinding_astar(grid: &AStar, s: Cell, t: Cell) -> f64 {
     .expect("solvable");
     black_box(path);
     cost as f64 / STRAIGHT as f64
-}
-
-/// The shared data (`RTNAV_DATA`, else `../shared/data` beside the repository), if there.
-pub fn data_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("RTNAV_DATA").map_or_else(
-        || PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data")),
-        PathBuf::from,
-    );
-    dir.is_dir().then_some(dir)
 }

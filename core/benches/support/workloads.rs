@@ -17,7 +17,7 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::local::{
     FieldExtent, FieldRequest, LocalPlanner, PlanParams, PlanRequest, PotentialField, reference,
 };
-use rtnav::map::{Cell, GridMap};
+use rtnav::map::{Cell, GridMap, MapUpdate};
 use rtnav::rtc::Time;
 
 use crate::warehouse;
@@ -112,14 +112,17 @@ impl Edit {
                 ys.push(self.brush.1 as i32 + dy);
             }
         }
-        let vs = vec![i16::from(self.painted); xs.len()];
-        let tm = Time {
-            sec: self.stamp,
-            nsec: 0,
+        let update = MapUpdate {
+            value: vec![i16::from(self.painted); xs.len()],
+            num: xs.len() as i32,
+            x: xs,
+            y: ys,
+            tm: Time {
+                sec: self.stamp,
+                nsec: 0,
+            },
         };
-        self.map
-            .map_update(&xs, &ys, &vs, xs.len() as i32, tm)
-            .expect("a valid MapUpdate");
+        self.map.map_update(&update).expect("a valid MapUpdate");
     }
 
     /// One edit with today's planners; returns the lengths of the new route and local path.

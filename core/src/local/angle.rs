@@ -1,7 +1,7 @@
 //! `atan2(y, x)` for `y ≥ 0`, bit for bit the value of `libm::atan2` (FreeBSD's `e_atan2.c`
 //! and `s_atan.c`, as the `libm` crate has them), but without its unpredictable branches.
 //!
-//! The potential field needs two angles per cell (SPEC §3 step 4, `S_Angle` and `G_Angle`).
+//! The potential field needs two angles per cell (spec §3 step 4, `S_Angle` and `G_Angle`).
 //! `libm::atan` picks one of five argument reductions by the size of its argument, each
 //! with its own division; cells are reached in potential order, not in space order, so that
 //! branch is a coin toss for the processor and costs more than the arithmetic. Here every
@@ -23,7 +23,7 @@
 //! `x − x·s` exactly (`0 − (u − x) = x − u` in round-to-nearest). libm's early exits for
 //! tiny and huge `t` return what the formula gives anyway (checked by the tests, with the
 //! special cases kept as rare, predictable branches). `f64::sqrt`-free, `libm`-free: plain
-//! IEEE arithmetic, so the same on every target (SPEC §6).
+//! IEEE arithmetic, so the same on every target (spec §6).
 
 // The constants of `s_atan.c` and `e_atan2.c`, by their bits (as their comments give them).
 const ATANHI: [f64; 5] = [

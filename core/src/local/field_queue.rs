@@ -1,6 +1,6 @@
 //! The potential field's Dijkstra queue: entries keyed by the bit pattern of their
 //! non-negative `f64` potential (which orders as the value), taken out in increasing key
-//! and, among equal keys, in the order they were put in (SPEC §3 step 4: "ties by insertion
+//! and, among equal keys, in the order they were put in (spec §3 step 4: "ties by insertion
 //! order"). Each entry carries the cell's path length `L`, so a finalized cell is expanded
 //! without reading its record back from memory.
 //!

@@ -1,4 +1,4 @@
-//! The potential field as it was first written (000 §5.2.4.9, SPEC §3 step 4), kept as the
+//! The potential field as it was first written (000 §5.2.4.9, spec §3 step 4), kept as the
 //! reference the fast [`super::PotentialField`] is checked against (property tests) and
 //! measured against (benchmarks). Plain and slow on purpose: one 48-byte record per cell, a
 //! pass over every cell's obstacle distance per field, the radix queue of
@@ -199,7 +199,7 @@ pub fn compute(map: &GridMap, req: &FieldRequest) -> Result<ReferenceField, Loca
     })
 }
 
-/// `G_Angle · G_Distance + S_Angle · S_Distance` with `libm::atan2` (SPEC §3 step 4).
+/// `G_Angle · G_Distance + S_Angle · S_Distance` with `libm::atan2` (spec §3 step 4).
 fn posture_terms(
     vx: i64,
     vy: i64,

@@ -1,5 +1,8 @@
-//! The OpenRTM-style component model (SPEC §1, seed 003): lifecycle, execution context,
+//! The OpenRTM-style component model (spec §1, seed 003): lifecycle, execution context,
 //! data ports, IDL types and configuration.
+
+mod error;
+pub use error::{ConfigError, LifecycleError};
 
 mod component;
 mod conf_file;

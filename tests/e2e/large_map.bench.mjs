@@ -1,4 +1,5 @@
-// End-to-end, a report rather than a check of speed (the machines are noisy): painting on
+// A browser report for `cargo xtask bench`, not a check of speed (the machines are noisy), and
+// not one of `cargo xtask test`'s e2e tests (not a `.test.mjs`): painting on
 // a map the size of Nav2's warehouse (1006 × 1674 cells of 0.03 m, 1.68 M cells) at 16×
 // while the robot drives, through the page's own file input, canvas and mouse.
 //
