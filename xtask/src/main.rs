@@ -11,8 +11,10 @@
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test                every check CI runs, with a summary
+//! cargo xtask bench               the performance table (docs/performance.md)
 //! ```
 
+mod bench;
 mod dist;
 mod fixtures;
 mod serve;
@@ -42,6 +44,10 @@ commands:
   test                 cargo test, clippy (native and wasm32), rustfmt, the wasm tests
                        under Node, the page's build and the browser end-to-end tests
                        (against the dist folder, served under a sub-path)
+  bench [--no-wasm] [--no-browser]
+                       the performance table of docs/performance.md: criterion benches
+                       with their baselines, the same operations in wasm32 under Node,
+                       and the worst frame painting on a 1.7 M-cell map in Chromium
   help                 this text
 
 External data (the real maps of some tests and scenarios) is read from $RTNAV_DATA, else
@@ -108,6 +114,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             }
             return Ok(test::run_all());
         }
+        "bench" => bench::run_all(rest)?,
         "help" | "--help" | "-h" => println!("{USAGE}"),
         other => return Err(format!("unknown command `{other}`\n\n{USAGE}").into()),
     }
