@@ -15,6 +15,10 @@ pub enum Error {
     /// A configuration parameter or `.conf` file problem (SPEC §1).
     #[error(transparent)]
     Config(#[from] ConfigError),
+    /// A timestamp refused where a sample entered a component (SPEC §4 Decision 0.2:
+    /// `nsec` ≥ 10⁹), by [`Time::checked`](crate::rtc::Time::checked).
+    #[error(transparent)]
+    Timestamp(#[from] crate::rtc::TimestampError),
     /// A map that cannot be built, loaded or updated (SPEC §2).
     #[error(transparent)]
     Map(#[from] MapError),
@@ -292,6 +296,10 @@ pub enum MotionError {
         /// What is needed, e.g. `2`, `at least 2`, `12`.
         expected: String,
     },
+    /// A timestamp with `nsec` ≥ 10⁹ on a port or service (SPEC §4 Decision 0.2), refused
+    /// by [`Time::checked`](crate::rtc::Time::checked).
+    #[error(transparent)]
+    BadTimestamp(#[from] crate::rtc::TimestampError),
     /// A timestamp not later than the previous one on the same port.
     #[error("{port}: time went backwards (or stood still): {now_s} s after {previous_s} s")]
     TimeWentBackwards {

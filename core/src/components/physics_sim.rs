@@ -168,7 +168,8 @@ impl PhysicsSim {
         self.physics.set_map(map);
     }
 
-    /// `MapUpdate` on the held map (atomic; SPEC §2).
+    /// `MapUpdate` on the held map (atomic; SPEC §2). A timestamp whose `nsec` is not below
+    /// 10⁹ is refused ([`Time::checked`], SPEC §4 Decision 0.2) and nothing changes.
     pub fn map_update(
         &mut self,
         x: &[i32],
@@ -177,6 +178,7 @@ impl PhysicsSim {
         num: i32,
         tm: Time,
     ) -> crate::Result<usize> {
+        let tm = tm.checked("MapUpdate")?;
         self.physics.map_update(x, y, value, num, tm)
     }
 
@@ -225,7 +227,9 @@ impl PhysicsSim {
         let Some(msg) = self.torque.read() else {
             return;
         };
-        let checked = if msg.data.len() != 2 {
+        let checked = if let Err(e) = msg.tm.checked("torque") {
+            Err(MotionError::from(e))
+        } else if msg.data.len() != 2 {
             Err(MotionError::WrongLength {
                 port: "torque",
                 len: msg.data.len(),

@@ -16,6 +16,6 @@ pub use config::{
     Reflection,
 };
 pub use execution_context::{ComponentId, ExecutionContext, InputInjection, LifecycleEvent};
-pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
+pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity, TimestampError};
 pub use port::{InPort, OutPort};
 pub use state::{ContextState, LifecycleState, Request};
