@@ -236,12 +236,14 @@ pub fn load_image(
     let reader = image::ImageReader::new(Cursor::new(image_bytes))
         .with_guessed_format()
         .map_err(|e| image_err(e.to_string()))?;
-    let kind = match reader.format() {
-        Some(image::ImageFormat::Pnm) => "PGM/PNM",
-        Some(image::ImageFormat::Png) => "PNG",
+    let (kind, pnm) = match reader.format() {
+        Some(image::ImageFormat::Pnm) => ("PGM/PNM", true),
+        Some(image::ImageFormat::Png) => ("PNG", false),
         _ => return Err(image_err("neither a PGM nor a PNG image")),
     };
     let bad = |e: image::ImageError| image_err(format!("cannot decode the {kind} image: {e}"));
+    // The header's size is checked before anything is allocated for the pixels (SPEC §2
+    // Decision 0.2): reading the dimensions reads only the header.
     let (w, h) = reader.into_dimensions().map_err(bad)?;
     let (width, height) = (w as usize, h as usize);
     if width == 0 || height == 0 {
@@ -249,16 +251,21 @@ pub fn load_image(
             "image of {width}×{height} pixels is empty"
         )));
     }
-    let cells = (width as u64) * (height as u64);
-    if cells > MAX_CELLS as u64 {
-        return Err(MapError::TooLarge {
-            width,
-            height,
-            cells,
-            limit: MAX_CELLS,
-        });
+    GridMap::check_size(u64::from(w), u64::from(h))?;
+    // A PNM image is not compressed: it needs at least one bit per pixel (P4's packing), so a
+    // header that claims more pixels than the file can hold is refused before decoding.
+    let pixels = u64::from(w) * u64::from(h);
+    if pnm && pixels > 8 * image_bytes.len() as u64 {
+        return Err(image_err(format!(
+            "the {kind} header claims {w}×{h} pixels, but the file has only {} bytes",
+            image_bytes.len()
+        )));
     }
-    let img = image::load_from_memory(image_bytes).map_err(bad)?;
+    let mut reader = image::ImageReader::new(Cursor::new(image_bytes))
+        .with_guessed_format()
+        .map_err(|e| image_err(e.to_string()))?;
+    reader.limits(decoder_limits());
+    let img = reader.decode().map_err(bad)?;
     let rule = Rule {
         negate: yaml.negate,
         occupied: yaml.occupied_thresh,
@@ -316,6 +323,22 @@ pub fn load_image(
         occupied,
         unknown,
     })
+}
+
+/// The most the image decoder may allocate at once: the largest decoded image of
+/// [`MAX_CELLS`] pixels (16-bit RGBA, 8 bytes a pixel) and one byte a pixel for its own
+/// buffers.
+pub const MAX_DECODER_ALLOC: u64 = 9 * MAX_CELLS as u64;
+
+/// The decoder's limits: each side at most [`MAX_CELLS`] pixels (the cell count is checked
+/// before decoding) and at most [`MAX_DECODER_ALLOC`] bytes allocated.
+fn decoder_limits() -> image::Limits {
+    let side = u32::try_from(MAX_CELLS).unwrap_or(u32::MAX);
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(side);
+    limits.max_image_height = Some(side);
+    limits.max_alloc = Some(MAX_DECODER_ALLOC);
+    limits
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
