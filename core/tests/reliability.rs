@@ -1,0 +1,427 @@
+//! Issue 18's reproductions, kept as regression tests (SPEC §2 and §4 Decisions 0.2):
+//!
+//! 1. the rtnav JSON map reader allocated `rows × width` before it checked the size: the exact
+//!    inputs of the report are refused with `MapError::TooLarge`, allocating almost nothing
+//!    (counted by this test binary's own allocator);
+//! 2. MotorControl panicked on `{0 s, 1.5e9 ns}` then `{1 s, 0 ns}`: the first is refused,
+//!    the second accepted, nothing panics;
+//! 3. timestamps are checked the same way where a sample enters every component
+//!    ([`Time::checked`]), and time differences never underflow ([`Time::nanos_since`]).
+//!
+//! (Reproduction 4, the dmin boundary, needs the lead's LocalPathPlanning change: it is in
+//! `pending_lead.rs`.)
+
+// A test binary may have its own allocator: this one counts, per thread, what the code under
+// test asks for. Its `unsafe` is the `GlobalAlloc` contract, passed straight to `System`.
+#![allow(unsafe_code)]
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+use proptest::prelude::*;
+use rtnav::components::{DriveControl, Localization, MotorControl, MotorStatus, PhysicsSim};
+use rtnav::errors::{MapError, MotionError};
+use rtnav::interfaces::ControlPoints;
+use rtnav::map::formats::{json, movingai, ros};
+use rtnav::map::{GridMap, MAX_CELLS};
+use rtnav::motion::PhysicsParams;
+use rtnav::rtc::{
+    Component, InPort, OutPort, Tick, Time, TimedDoubleSeq, TimedPosition, TimedVelocity,
+    TimestampError,
+};
+
+// ------------------------------------------------------------------ counting allocator
+
+thread_local! {
+    static LIVE: Cell<i64> = const { Cell::new(0) };
+    static PEAK: Cell<i64> = const { Cell::new(0) };
+    static LARGEST: Cell<usize> = const { Cell::new(0) };
+}
+
+struct Counting;
+
+fn note_alloc(size: usize) {
+    let _ = LARGEST.try_with(|l| l.set(l.get().max(size)));
+    let _ = LIVE.try_with(|live| {
+        let now = live.get() + size as i64;
+        live.set(now);
+        let _ = PEAK.try_with(|p| p.set(p.get().max(now)));
+    });
+}
+
+fn note_free(size: usize) {
+    let _ = LIVE.try_with(|live| live.set(live.get() - size as i64));
+}
+
+// SAFETY: every call is passed to the system allocator with the caller's arguments; the
+// counters are thread-local `Cell`s with const initialisers, which never allocate.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        note_alloc(layout.size());
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        note_alloc(layout.size());
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        note_free(layout.size());
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        note_free(layout.size());
+        note_alloc(new_size);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Runs `f` and returns its result with the largest single request and the peak of live
+/// bytes above the start, both on this thread.
+fn measured<T>(f: impl FnOnce() -> T) -> (T, usize, i64) {
+    let base = LIVE.with(Cell::get);
+    PEAK.with(|p| p.set(base));
+    LARGEST.with(|l| l.set(0));
+    let out = f();
+    (out, LARGEST.with(Cell::get), PEAK.with(Cell::get) - base)
+}
+
+const MIB: usize = 1 << 20;
+
+// ------------------------------------------------------------------ 1. map readers
+
+/// The report's inputs: 2³¹ cells asked 2 GiB of `rows × width`; a larger width aborted the
+/// process ("memory allocation … failed"); `u64::MAX` panicked with "capacity overflow".
+#[test]
+fn json_map_with_a_huge_width_is_refused_before_anything_is_allocated() {
+    let widths: [(&str, u64); 3] = [
+        ("2147483648", 2_147_483_648),
+        ("1099511627776", 1 << 40),
+        ("18446744073709551615", u64::MAX),
+    ];
+    for (text, width) in widths {
+        let input = format!(r#"{{"width": {text}, "height": 1, "grid_size": 1, "rows": ["."]}}"#);
+        let (result, largest, peak) = measured(|| json::load(&input));
+        match result {
+            Err(MapError::TooLarge { cells, limit, .. }) => {
+                assert_eq!(limit, MAX_CELLS);
+                assert_eq!(cells, width, "width {text}: cells as asked (saturated)");
+            }
+            other => panic!("width {text}: expected TooLarge, got {other:?}"),
+        }
+        assert!(
+            largest < MIB && peak < MIB as i64,
+            "width {text}: asked for {largest} bytes at once, {peak} at the peak"
+        );
+    }
+}
+
+#[test]
+fn json_map_rows_are_checked_before_the_cells_are_allocated() {
+    // Within the limit, but the rows do not hold what the header claims: refused without
+    // allocating the 16 Mi cells.
+    let input = r#"{"width": 16777216, "height": 1, "grid_size": 1, "rows": ["."]}"#;
+    let (result, largest, _) = measured(|| json::load(input));
+    assert!(
+        matches!(&result, Err(MapError::Format { reason, .. }) if reason.contains("expected width 16777216")),
+        "{result:?}"
+    );
+    assert!(largest < MIB, "asked for {largest} bytes at once");
+    let zero = r#"{"width": 0, "height": 1, "grid_size": 1, "rows": [""]}"#;
+    assert!(matches!(
+        json::load(zero),
+        Err(MapError::BadDimension {
+            axis: "MapLengthX",
+            ..
+        })
+    ));
+}
+
+#[test]
+fn movingai_and_ros_headers_that_claim_more_than_the_file_holds_allocate_little() {
+    // A `.map` header within the limit with no rows: the rows are gathered as they come.
+    let text = "type octile\nheight 4096\nwidth 4096\nmap\n";
+    let (result, largest, _) = measured(|| movingai::load_map(text));
+    assert!(result.is_err());
+    assert!(largest < MIB, "asked for {largest} bytes at once");
+    // Beyond the limit, with overflow.
+    let text = format!(
+        "type octile\nheight {}\nwidth {}\nmap\n",
+        u64::MAX,
+        u64::MAX
+    );
+    assert!(matches!(
+        movingai::load_map(&text),
+        Err(MapError::TooLarge { .. })
+    ));
+    // A PGM header of 4096 × 4096 pixels in 20 bytes: refused before decoding.
+    let yaml = "image: m.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n\
+                occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+    let pgm = b"P5\n4096 4096\n255\n\x00\x00";
+    let (result, largest, _) = measured(|| ros::load(yaml, pgm, &ros::RosLoadOptions::default()));
+    assert!(
+        matches!(&result, Err(MapError::Format { reason, .. }) if reason.contains("claims 4096×4096")),
+        "{result:?}"
+    );
+    assert!(largest < MIB, "asked for {largest} bytes at once");
+    // Beyond the limit: the size check comes first.
+    let pgm = b"P5\n65535 65535\n255\n\x00";
+    assert!(matches!(
+        ros::load(yaml, pgm, &ros::RosLoadOptions::default()),
+        Err(MapError::TooLarge { .. })
+    ));
+}
+
+#[test]
+fn check_size_is_the_one_size_check_of_every_reader() {
+    assert_eq!(GridMap::check_size(4096, 4096), Ok(MAX_CELLS));
+    assert!(matches!(
+        GridMap::check_size(4097, 4096),
+        Err(MapError::TooLarge { .. })
+    ));
+    assert!(matches!(
+        GridMap::check_size(u64::MAX, 2),
+        Err(MapError::TooLarge {
+            cells: u64::MAX,
+            ..
+        })
+    ));
+    assert!(matches!(
+        GridMap::check_size(3, 0),
+        Err(MapError::BadDimension {
+            axis: "MapLengthY",
+            value: 0
+        })
+    ));
+}
+
+// ------------------------------------------------------------------ 2. MotorControl
+
+const MS: u64 = 1_000_000;
+
+fn tick(ms: u64) -> Tick {
+    Tick {
+        time_ns: ms * MS,
+        period_ns: MS,
+        index: ms,
+    }
+}
+
+fn bad_time(what: &'static str) -> MotionError {
+    MotionError::BadTimestamp(TimestampError {
+        what,
+        sec: 0,
+        nsec: 1_500_000_000,
+    })
+}
+
+/// The exact sequence of the report: `{0 s, 1.5e9 ns}` then `{1 s, 0 ns}` on
+/// `InCurrentWheelAngle`. The first passed the ordering check (`(0, 1.5e9) < (1, 0)`) and the
+/// rate's `as_nanos()` subtraction underflowed (a panic in debug, a wrong rate in release).
+#[test]
+fn motor_control_refuses_nsec_of_a_second_or_more_and_never_underflows() {
+    let mut m = MotorControl::default();
+    let mut ang = OutPort::new("angle");
+    let mut vel = OutPort::new("velocity");
+    let torque = InPort::new("torque");
+    ang.connect(&m.in_current_wheel_angle);
+    vel.connect(&m.target_velocity);
+    m.torque.connect(&torque);
+    m.configuration().unwrap().apply_on_activation();
+    m.on_activated(&tick(0)).unwrap();
+
+    vel.write(TimedVelocity {
+        tm: Time { sec: 0, nsec: 0 },
+        vx: 0.2,
+        ..TimedVelocity::default()
+    });
+    ang.write(TimedDoubleSeq {
+        tm: Time {
+            sec: 0,
+            nsec: 1_500_000_000,
+        },
+        data: vec![0.0, 0.0],
+    });
+    m.on_execute(&tick(1)).unwrap();
+    assert_eq!(m.last_error(), Some(&bad_time("InCurrentWheelAngle")));
+    assert_eq!(
+        m.status(),
+        &MotorStatus::SafeStop(bad_time("InCurrentWheelAngle"))
+    );
+    assert_eq!(torque.read().unwrap().data, vec![0.0, 0.0]);
+    assert!(
+        m.last_error()
+            .unwrap()
+            .to_string()
+            .contains("InCurrentWheelAngle: timestamp {sec: 0, nsec: 1500000000}"),
+        "{}",
+        m.last_error().unwrap()
+    );
+
+    ang.write(TimedDoubleSeq {
+        tm: Time { sec: 1, nsec: 0 },
+        data: vec![0.5, 0.5],
+    });
+    m.on_execute(&tick(2)).unwrap();
+    // The refused sample was never kept: this is the first, so its rate is 0.
+    assert_eq!(m.wheel_rates(), [0.0, 0.0]);
+    assert_eq!(m.status(), &MotorStatus::Running);
+
+    // The same timestamp on the other two ports.
+    vel.write(TimedVelocity {
+        tm: Time {
+            sec: 0,
+            nsec: 1_500_000_000,
+        },
+        ..TimedVelocity::default()
+    });
+    m.on_execute(&tick(3)).unwrap();
+    assert_eq!(m.last_error(), Some(&bad_time("TargetVelocity")));
+    m.in_simulated_position.put(TimedDoubleSeq {
+        tm: Time {
+            sec: 0,
+            nsec: 1_500_000_000,
+        },
+        data: vec![0.0; 12],
+    });
+    m.on_execute(&tick(4)).unwrap();
+    assert_eq!(m.last_error(), Some(&bad_time("InSimulatedPosition")));
+    assert_eq!(m.simulated_pose(), None);
+}
+
+// ------------------------------------------------------------------ 3. one timestamp check
+
+fn bad(what: &'static str) -> TimestampError {
+    TimestampError {
+        what,
+        sec: 7,
+        nsec: 1_000_000_000,
+    }
+}
+
+const BAD: Time = Time {
+    sec: 7,
+    nsec: 1_000_000_000,
+};
+
+#[test]
+fn localization_drive_control_and_physics_refuse_the_same_timestamps() {
+    // Localization: ignored and reported, as a wrong length is; it stays Active.
+    let mut l = Localization::default();
+    l.configuration().unwrap().apply_on_activation();
+    l.on_activated(&tick(0)).unwrap();
+    for port in ["InSimulatedPosition", "InCurrentWheelAngle"] {
+        let msg = TimedDoubleSeq {
+            tm: BAD,
+            data: vec![1.0, 2.0, 0.0, 0.5],
+        };
+        if port == "InSimulatedPosition" {
+            l.in_simulated_position.put(msg);
+        } else {
+            l.in_current_wheel_angle.put(msg);
+        }
+        l.on_execute(&tick(1)).unwrap();
+        assert_eq!(
+            l.last_error(),
+            Some(&MotionError::BadTimestamp(bad(port))),
+            "{port}"
+        );
+    }
+    assert_eq!(l.simulated_pose(), None);
+
+    // DriveControl: a pose with a bad timestamp is a pose fault (zero velocity); control
+    // points with one are refused and the held path stays.
+    let mut d = DriveControl::default();
+    d.configuration().unwrap().apply_on_activation();
+    d.on_activated(&tick(0)).unwrap();
+    d.in_control_points.put(ControlPoints {
+        tm: BAD,
+        points: vec![(0.0, 0.0), (1.0, 0.0)],
+        ..ControlPoints::default()
+    });
+    d.on_execute(&tick(20)).unwrap();
+    assert_eq!(
+        d.last_error(),
+        Some(&MotionError::BadTimestamp(bad("InControlPoints")))
+    );
+    assert!(d.pursuit().polyline().is_none());
+    d.in_current_position.put(TimedPosition {
+        tm: BAD,
+        ..TimedPosition::default()
+    });
+    d.on_execute(&tick(40)).unwrap();
+    assert_eq!(
+        d.last_error(),
+        Some(&MotionError::BadTimestamp(bad("InCurrentPosition")))
+    );
+
+    // PhysicsSim: a torque with a bad timestamp is refused (zero torque), and so is a
+    // MapUpdate.
+    let mut p = PhysicsSim::new("PhysicsSim0", PhysicsParams::default()).unwrap();
+    p.configuration().unwrap().apply_on_activation();
+    p.on_activated(&tick(0)).unwrap();
+    p.torque.put(TimedDoubleSeq {
+        tm: BAD,
+        data: vec![1.0, 1.0],
+    });
+    p.on_execute(&tick(1)).unwrap();
+    assert_eq!(p.applied_torque(), [0.0, 0.0]);
+    assert_eq!(
+        p.last_error(),
+        Some(&MotionError::BadTimestamp(bad("torque")))
+    );
+    p.set_map(Some(GridMap::from_map_data(&[0; 4], 2, 2, 1.0).unwrap()));
+    let before = format!("{:?}", p.physics());
+    let e = p.map_update(&[0], &[0], &[1], 1, BAD).unwrap_err();
+    assert_eq!(e, rtnav::Error::Timestamp(bad("MapUpdate")));
+    assert_eq!(format!("{:?}", p.physics()), before, "nothing changed");
+}
+
+#[test]
+fn time_checked_and_nanos_since_at_the_edges() {
+    let max = Time {
+        sec: u32::MAX,
+        nsec: u32::MAX,
+    };
+    assert_eq!(max.checked("x"), Err(bad_with("x", u32::MAX, u32::MAX)));
+    assert_eq!(
+        Time {
+            sec: 0,
+            nsec: 999_999_999
+        }
+        .checked("x"),
+        Ok(Time {
+            sec: 0,
+            nsec: 999_999_999
+        })
+    );
+    // {1 s, 0} after {0 s, 1.5e9 ns}: the report's underflow, now 0.
+    let early = Time {
+        sec: 0,
+        nsec: 1_500_000_000,
+    };
+    assert_eq!(Time { sec: 1, nsec: 0 }.nanos_since(early), 0);
+    assert_eq!(max.nanos_since(Time::default()), max.as_nanos());
+    assert_eq!(Time::default().nanos_since(max), 0);
+}
+
+fn bad_with(what: &'static str, sec: u32, nsec: u32) -> TimestampError {
+    TimestampError { what, sec, nsec }
+}
+
+proptest! {
+    /// `checked` accepts exactly `nsec < 10⁹`; on valid times the derived order is the order
+    /// of `as_nanos`, and `nanos_since` is the exact non-negative difference.
+    #[test]
+    fn valid_times_order_and_subtract_exactly(a in any::<(u32, u32)>(), b in any::<(u32, u32)>()) {
+        let (ta, tb) = (Time { sec: a.0, nsec: a.1 }, Time { sec: b.0, nsec: b.1 });
+        prop_assert_eq!(ta.checked("p").is_ok(), a.1 < 1_000_000_000);
+        let diff = i128::from(ta.as_nanos()) - i128::from(tb.as_nanos());
+        prop_assert_eq!(i128::from(ta.nanos_since(tb)), diff.max(0));
+        if ta.is_valid() && tb.is_valid() {
+            prop_assert_eq!(ta.cmp(&tb), ta.as_nanos().cmp(&tb.as_nanos()));
+        }
+    }
+}
