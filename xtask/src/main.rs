@@ -10,10 +10,14 @@
 //! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask test                every check CI runs, with a summary
+//! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
+//! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
 //! ```
 
 mod fixtures;
+mod fuzz;
 mod serve;
+mod soak;
 mod test;
 mod tools;
 mod wasm;
@@ -34,8 +38,16 @@ commands:
   build-wasm [--dev]   build rtnav-wasm into web/pkg (release unless --dev) and copy
                        the scenario fixtures and their maps into web/fixtures
   serve [--port N]     copy the fixtures and serve web/ without building
-  test                 cargo test, clippy (native and wasm32), rustfmt, the wasm tests
-                       under Node and the browser end-to-end tests
+  test                 cargo test, clippy (native and wasm32), rustfmt, a one-hour soak,
+                       the wasm tests under Node and the browser end-to-end tests
+  fuzz [--seconds N] [--seed S] [--target NAME]...
+                       fuzz the readers and the hostile calls in release mode for N s in
+                       all (default 300); prints per target the inputs tried, the failures
+                       (with the command that replays each) and the slowest input
+  soak [--hours H] [--scenario FILE] [--seed S]
+                       drive open_field and the Willow Garage ROS map (or FILE) for H
+                       simulated hours (default 24) with random goals and map edits; fails
+                       on a bump, an error, a stuck period or growing memory
   help                 this text";
 
 fn main() -> ExitCode {
@@ -79,6 +91,8 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             }
             return Ok(test::run_all());
         }
+        "fuzz" => fuzz::fuzz(rest)?,
+        "soak" => soak::soak(rest)?,
         "help" | "--help" | "-h" => println!("{USAGE}"),
         other => return Err(format!("unknown command `{other}`\n\n{USAGE}").into()),
     }
