@@ -76,8 +76,13 @@ pub struct StuckPeriod {
     pub pose: Pose,
     /// The goal held, if any.
     pub goal: Option<Pose>,
+    /// The obstacle distance of the robot's cell then \[m\] (compare with `dmin`).
+    pub cell_distance: Option<f64>,
     /// Why: no motion, or no goal accepted (and the last refusal's reason).
     pub reason: String,
+    /// How long it lasted \[s\]: until the robot moved again (or a goal was accepted), or
+    /// the end of the soak.
+    pub lasted_s: f64,
 }
 
 /// Memory figures \[bytes\].
@@ -199,11 +204,14 @@ impl SoakReport {
         s += &format!("stuck periods     {}\n", self.stuck.len());
         for p in self.stuck.iter().take(10) {
             s += &format!(
-                "                  at {:.1} s, robot ({:.3}, {:.3}, {:.3}), goal {}: {}\n",
-                p.at_s,
+                "                  from {:.1} s for {:.1} s: robot ({:.3}, {:.3}, {:.3}) in a cell \
+                 {} m from an obstacle, goal {}: {}\n",
+                p.at_s - STUCK_AFTER_NS as f64 * 1e-9,
+                p.lasted_s,
                 p.pose.x,
                 p.pose.y,
                 p.pose.theta,
+                p.cell_distance.map_or("?".to_owned(), |d| format!("{d:?}")),
                 p.goal
                     .map_or("none".to_owned(), |g| format!("({:.2}, {:.2})", g.x, g.y)),
                 p.reason
@@ -382,6 +390,8 @@ impl Soak {
 
     /// The final report.
     pub fn finish(mut self) -> SoakReport {
+        let now = self.system.time_ns();
+        self.end_stuck(now);
         let s = &self.system;
         self.report.sim_hours = s.time_ns() as f64 / 3.6e12;
         self.report.wall = self.started.elapsed();
@@ -451,7 +461,7 @@ impl Soak {
             self.still_since_ns = now;
             self.still_pose = p;
             if self.want_goal_since_ns.is_none() {
-                self.stuck_noticed = false;
+                self.end_stuck(now);
             }
         }
         // Stuck: a goal held and no motion for 60 s, or no new goal accepted for 60 s.
@@ -475,12 +485,28 @@ impl Soak {
                     STUCK_AFTER_NS / NS_PER_S
                 )
             };
+            let cell_distance = self
+                .system
+                .map()
+                .and_then(|m| Some(m.obstacle_distance(m.world_to_cell(p.x, p.y)?)));
             self.report.stuck.push(StuckPeriod {
                 at_s: now as f64 * 1e-9,
                 pose: p,
                 goal: self.goal,
+                cell_distance,
                 reason,
+                lasted_s: 0.0,
             });
+        }
+    }
+
+    /// Ends a stuck period in progress (its length is set).
+    fn end_stuck(&mut self, now: u64) {
+        if self.stuck_noticed {
+            self.stuck_noticed = false;
+            if let Some(p) = self.report.stuck.last_mut() {
+                p.lasted_s = now as f64 * 1e-9 - (p.at_s - STUCK_AFTER_NS as f64 * 1e-9);
+            }
         }
     }
 
@@ -514,12 +540,12 @@ impl Soak {
                 self.arrived = false;
                 self.last_refusal = None;
                 self.want_goal_since_ns = None;
+                self.end_stuck(now);
                 let p = self.system.robot_pose();
                 let straight = libm::hypot(goal.x - p.x, goal.y - p.y);
                 // Generous: the route may be three times the straight line, at 0.1 m/s.
                 self.goal_deadline_ns = now + ((120.0 + straight * 30.0) * NS_PER_S as f64) as u64;
                 self.still_since_ns = now;
-                self.stuck_noticed = false;
             }
             Err(e) => {
                 self.report.goals_refused += 1;
@@ -531,13 +557,15 @@ impl Soak {
     }
 
     /// A random goal at least 2 m away, well clear of obstacles, reachable from the robot's
-    /// cell on the current map.
+    /// cell on the current map. (If the robot's own cell is blocked — within `dmin` — no goal
+    /// is reachable: one is picked all the same, so that `set_goal` says why it refuses.)
     fn pick_goal(&mut self) -> Option<Pose> {
         let map = self.system.map()?.clone();
         let dmin = self.options.dmin;
         let robot = self.system.robot_pose();
         let from = map.world_to_cell(robot.x, robot.y)?;
         let mut planner = AStar::new(&map, dmin).ok()?;
+        let blocked = !planner.is_passable(from.0 as i64, from.1 as i64);
         for _ in 0..60 {
             let c = (self.rng.index(map.width()), self.rng.index(map.height()));
             if within_dmin(map.obstacle_distance(c), dmin + 0.25) {
@@ -547,7 +575,7 @@ impl Soak {
             if libm::hypot(x - robot.x, y - robot.y) < 2.0 {
                 continue;
             }
-            if planner.plan(from, c).is_ok() {
+            if blocked || planner.plan(from, c).is_ok() {
                 let theta = self
                     .rng
                     .range(-core::f64::consts::PI, core::f64::consts::PI);

@@ -151,3 +151,43 @@ fn panics_slowness_and_allocation_are_reported() {
     );
     assert!(r.failures.iter().any(|f| f.message.contains("boom")));
 }
+
+/// The largest map the limit allows (4096 × 4096 = `MAX_CELLS`) as a 16 KiB PNG: accepted,
+/// within the allocation bound; the time it takes is printed (run it with `--release`:
+/// `cargo test --release -p rtnav-cli --test fuzz -- --ignored largest`).
+#[test]
+#[ignore = "a measurement: 16 Mi cells take seconds in a debug build"]
+fn the_largest_legal_png_map_loads_within_the_bound() {
+    use rtnav::map::MAX_CELLS;
+    use rtnav::map::formats::ros;
+    let pixels = vec![255u8; MAX_CELLS];
+    let png = fuzz::readers::encode_png(
+        4096,
+        4096,
+        png::ColorType::Grayscale,
+        png::BitDepth::Eight,
+        &pixels,
+    )
+    .unwrap();
+    drop(pixels);
+    let yaml = "image: m.png\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n\
+                occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+    let started = std::time::Instant::now();
+    let (r, usage) =
+        rtnav_cli::alloc::measure(|| ros::load(yaml, &png, &ros::RosLoadOptions::default()));
+    let took = started.elapsed();
+    let map = r.unwrap().map;
+    assert_eq!(map.cells().len(), MAX_CELLS);
+    let bound = fuzz::readers::BASE
+        + fuzz::readers::PER_BYTE * png.len() as u64
+        + fuzz::readers::PER_PIXEL * MAX_CELLS as u64;
+    println!(
+        "4096 × 4096 PNG ({} bytes): {:.3} s, largest request {}, peak {} (bound {})",
+        png.len(),
+        took.as_secs_f64(),
+        fuzz::bytes(usage.largest as u64),
+        fuzz::bytes(usage.peak as u64),
+        fuzz::bytes(bound)
+    );
+    assert!(usage.peak as u64 <= bound);
+}
