@@ -425,3 +425,72 @@ proptest! {
         }
     }
 }
+
+// ------------------------------------------------------------------ found by `rtnav fuzz`
+
+/// Found by the fuzzer (target `components`, DriveControl): control points with huge finite
+/// coordinates made the pure-pursuit command NaN (∞ − ∞ on the way); the NaN was kept as the
+/// last command, and the next tick's rate limit `clamp(NaN − step, NaN + step)` panicked
+/// ("min > max, or either was NaN"). A path whose length is not finite is now refused, and a
+/// command that is not finite is never sent or kept: DriveControl stops and says why.
+#[test]
+fn drive_control_survives_control_points_at_the_edge_of_f64() {
+    use rtnav::interfaces::Direction;
+    let paths: [Vec<(f64, f64)>; 5] = [
+        // The fuzzer's input (seed 1796158401, case 680), driven backward from
+        // (5.601342793926909, -0.4771496147096972, -0.9805294880598153).
+        vec![
+            (0.3214770733196002, f64::MAX),
+            (0.6998092622262915, -7.324211918620598e137),
+            (0.0, 7.916249414072893e-153),
+            (-0.09478904402227817, -0.0),
+        ],
+        vec![(0.0, 0.0), (f64::MAX, 0.0), (-f64::MAX, 0.0)],
+        vec![(0.0, 0.0), (f64::MAX, f64::MAX)],
+        vec![(-1e300, 1e300), (1e300, -1e300), (0.5, 0.5)],
+        vec![(0.0, 0.0), (1e308, 0.0)],
+    ];
+    for points in paths {
+        for (pose, direction) in [
+            (
+                (5.601342793926909, -0.4771496147096972, -0.9805294880598153),
+                Direction::Backward,
+            ),
+            ((0.0, 0.0, 0.0), Direction::Forward),
+            ((1e300, -1e300, 3.0), Direction::Backward),
+            ((f64::MAX, 0.0, -3.0), Direction::Forward),
+        ] {
+            let mut d = DriveControl::default();
+            let vel = InPort::new("velocity");
+            d.target_velocity.connect(&vel);
+            d.configuration().unwrap().apply_on_activation();
+            d.on_activated(&tick(0)).unwrap();
+            d.in_control_points.put(ControlPoints {
+                tm: Time::default(),
+                points: points.clone(),
+                direction,
+                goal_theta: 1.4438086518654156,
+            });
+            for k in 1..=5 {
+                d.in_current_position.put(TimedPosition {
+                    tm: Time::from_nanos(k * 20 * MS),
+                    x: pose.0,
+                    y: pose.1,
+                    theta: pose.2,
+                    ..TimedPosition::default()
+                });
+                let t = Tick {
+                    time_ns: k * 20 * MS,
+                    period_ns: 20 * MS,
+                    index: k * 20,
+                };
+                d.on_execute(&t).unwrap();
+                let v = vel.read().unwrap();
+                assert!(
+                    v.vx.is_finite() && v.w.is_finite(),
+                    "{points:?} from {pose:?}: sent {v:?}"
+                );
+            }
+        }
+    }
+}
