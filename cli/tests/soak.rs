@@ -51,6 +51,9 @@ fn a_robot_that_stops_with_a_goal_held_is_a_stuck_period() {
     let r = soak.finish();
     assert_eq!(r.stuck.len(), 1, "{r:#?}");
     assert!(r.stuck[0].reason.contains("no motion for 60 s"), "{r:#?}");
-    assert!(r.stuck[0].lasted_s >= 60.0 && r.stuck[0].cell_distance.is_some(), "{r:#?}");
+    assert!(
+        r.stuck[0].lasted_s >= 60.0 && r.stuck[0].cell_distance.is_some(),
+        "{r:#?}"
+    );
     assert!(r.problems().iter().any(|p| p.contains("1 stuck periods")));
 }

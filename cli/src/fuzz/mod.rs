@@ -214,12 +214,35 @@ fn install_quiet_hook() {
         let previous = std::panic::take_hook();
         std::panic::set_hook(Box::new(move |info| {
             if QUIET.with(Cell::get) {
-                let _ = LAST_PANIC.try_with(|p| *p.borrow_mut() = info.to_string());
+                let message = format!("{info}{}", rtnav_frames());
+                let _ = LAST_PANIC.try_with(|p| *p.borrow_mut() = message);
             } else {
                 previous(info);
             }
         }));
     });
+}
+
+/// The innermost frames of the core (`rtnav::…`) in the current backtrace, with their
+/// locations: where in the library a panic happened, even when it was raised in `core`.
+fn rtnav_frames() -> String {
+    let trace = std::backtrace::Backtrace::force_capture().to_string();
+    let lines: Vec<&str> = trace.lines().map(str::trim).collect();
+    let mut out = String::new();
+    let mut shown = 0;
+    for (i, l) in lines.iter().enumerate() {
+        let name = l.split_once(": ").map_or("", |(_, n)| n);
+        let at = lines
+            .get(i + 1)
+            .filter(|n| n.starts_with("at "))
+            .map_or("", |n| n);
+        // The core's frames (the `rtnav` binary's own frames are named `rtnav::` too).
+        if name.starts_with("rtnav::") && !at.contains("cli/src") && shown < 4 {
+            let _ = write!(out, "\n    in {name} {at}");
+            shown += 1;
+        }
+    }
+    out
 }
 
 /// Input `case` of `target` under `seed`: a mutated fixture input or a generated one.
@@ -402,29 +425,27 @@ fn run_case(
             Some(("panic", message))
         }
         Ok(Err(message)) => Some(("invariant", message)),
-        Ok(Ok(())) if took > SLOW => Some((
-            "slow",
-            format!(
+        Ok(Ok(())) => {
+            let over =
+                alloc::installed() && (usage.largest as u64 > bound || usage.peak > bound as i64);
+            let alloc_text = format!(
+                "asked for {} at once, {} at the peak: the bound is {}",
+                bytes(usage.largest as u64),
+                bytes(usage.peak.max(0) as u64),
+                bytes(bound)
+            );
+            let slow_text = format!(
                 "took {:.3} s (limit {:.0} s)",
                 took.as_secs_f64(),
                 SLOW.as_secs_f64()
-            ),
-        )),
-        Ok(Ok(()))
-            if alloc::installed()
-                && (usage.largest as u64 > bound || usage.peak > bound as i64) =>
-        {
-            Some((
-                "alloc",
-                format!(
-                    "asked for {} at once, {} at the peak: the bound is {}",
-                    bytes(usage.largest as u64),
-                    bytes(usage.peak.max(0) as u64),
-                    bytes(bound)
-                ),
-            ))
+            );
+            match (over, took > SLOW) {
+                (true, true) => Some(("alloc", format!("{alloc_text}; {slow_text}"))),
+                (true, false) => Some(("alloc", alloc_text)),
+                (false, true) => Some(("slow", slow_text)),
+                (false, false) => None,
+            }
         }
-        Ok(Ok(())) => None,
     };
     (failure, took, usage)
 }

@@ -22,7 +22,7 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
 use rtnav::rtc::{ParamSpec, ParameterSet, Time};
 use rtnav::system::{
-    CONF_BUNDLE_HEADER, ComponentKind, MemoryResolver, Rates, Scenario, Session, System,
+    CONF_BUNDLE_HEADER, ComponentKind, MemoryResolver, Rates, Scenario, Session, Setup, System,
 };
 
 use super::{Bytes, Case, HOSTILE_F64, INTERESTING_NUMBERS, REFUSED, Target};
@@ -747,14 +747,22 @@ impl Target for Tokens {
     }
 
     fn alloc_bound(&self, case: &Case) -> u64 {
-        // The JSON inflated (at most the reader's own limit), parsed, and a system rebuilt.
+        // A token that does not inflate within the reader's own limit, or is not a set-up,
+        // costs its inflated bytes (the output grows by doubling) and nothing more; one that
+        // is a set-up is parsed and a system rebuilt from it.
+        let base = (1 << 20) + 64 * case.len() as u64;
         let inflated = URL_SAFE_NO_PAD
             .decode(case.part(0).trim_ascii())
             .ok()
             .and_then(|b| {
                 miniz_oxide::inflate::decompress_to_vec_with_limit(&b, INFLATE_LIMIT as usize).ok()
-            })
-            .map_or(INFLATE_LIMIT, |j| j.len() as u64);
-        (64 << 20) + 64 * case.len() as u64 + 8 * inflated
+            });
+        match inflated {
+            Some(json) if serde_json::from_slice::<Setup>(&json).is_ok() => {
+                (64 << 20) + base + 8 * json.len() as u64
+            }
+            Some(json) => base + 4 * json.len() as u64,
+            None => base + 2 * INFLATE_LIMIT,
+        }
     }
 }
