@@ -416,10 +416,8 @@ fn run_fuzz(
             .duration_since(std::time::UNIX_EPOCH)
             .map_or(18, |d| d.as_secs())
     });
-    let names: Vec<&str> = fuzz::all_targets(&root, data_dir.as_deref())
-        .iter()
-        .map(|t| t.name())
-        .collect();
+    let targets = fuzz::all_targets(&root, data_dir.as_deref());
+    let names: Vec<&str> = targets.iter().map(|t| t.name()).collect();
     let chosen = names
         .iter()
         .filter(|n| fuzz::chosen(n, &only, &names))
@@ -445,9 +443,7 @@ fn run_fuzz(
         only,
         replay,
     };
-    let reports = fuzz::run(&root, data_dir.as_deref(), &options, |r| {
-        println!("{}", r.line())
-    });
+    let reports = fuzz::run_targets(targets, &options, |r| println!("{}", r.line()));
     let tried: u64 = reports.iter().map(|r| r.tried).sum();
     let failed: u64 = reports.iter().map(|r| r.failed).sum();
     let failures: Vec<(&str, &fuzz::Failure)> = reports

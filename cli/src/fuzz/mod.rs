@@ -520,10 +520,18 @@ pub fn run(
     root: &Path,
     data: Option<&Path>,
     options: &Options,
+    progress: impl FnMut(&TargetReport),
+) -> Vec<TargetReport> {
+    run_targets(all_targets(root, data), options, progress)
+}
+
+/// Runs the chosen ones of `targets`; returns the reports.
+pub fn run_targets(
+    targets: Vec<Box<dyn Target>>,
+    options: &Options,
     mut progress: impl FnMut(&TargetReport),
 ) -> Vec<TargetReport> {
     let mut reports = Vec::new();
-    let targets = all_targets(root, data);
     let names: Vec<&'static str> = targets.iter().map(|t| t.name()).collect();
     for mut target in targets {
         if !chosen(target.name(), &options.only, &names) {

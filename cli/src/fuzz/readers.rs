@@ -111,7 +111,10 @@ pub fn targets(root: &Path, data: Option<&Path>) -> Vec<Box<dyn Target>> {
     scenario_seeds.extend(files.iter().filter_map(|p| read(p)).map(Case::one));
     vec![
         Box::new(JsonMap { seeds: json_seeds }),
-        Box::new(RosMap { seeds: ros_seeds }),
+        Box::new(RosMap {
+            seeds: ros_seeds,
+            large: vec![white_png(2048, 1024), white_png(4097, 4096)],
+        }),
         Box::new(RosYaml { seeds: yaml_seeds }),
         Box::new(MovingaiMap { seeds: map_seeds }),
         Box::new(MovingaiScen { seeds: scen_seeds }),
@@ -287,6 +290,21 @@ fn claimed_pixels(image: &[u8]) -> u64 {
 
 struct RosMap {
     seeds: Vec<Case>,
+    /// Large valid PNGs (made once): 2048 × 1024, and 4097 × 4096 (over the limit).
+    large: Vec<Vec<u8>>,
+}
+
+/// A white 8-bit grey PNG of `w × h` pixels.
+fn white_png(w: u32, h: u32) -> Vec<u8> {
+    let pixels = vec![255u8; (w * h) as usize];
+    encode_png(
+        w,
+        h,
+        png::ColorType::Grayscale,
+        png::BitDepth::Eight,
+        &pixels,
+    )
+    .unwrap_or_default()
 }
 
 impl Target for RosMap {
@@ -352,19 +370,9 @@ impl Target for RosMap {
                 encode_png(pw, ph, color, depth, &pixels).unwrap_or_default()
             }
             _ => {
-                // A valid PNG whose size is at, or just over, the map limit (compressed to a
-                // few kilobytes): the size check decides before the decoder allocates.
-                let over = rng.chance(0.5);
-                let (pw, ph) = if over { (4097, 4096) } else { (2048, 1024) };
-                let pixels = vec![255u8; (pw * ph) as usize];
-                encode_png(
-                    pw,
-                    ph,
-                    png::ColorType::Grayscale,
-                    png::BitDepth::Eight,
-                    &pixels,
-                )
-                .unwrap_or_default()
+                // A valid PNG of 2 Mi pixels, or one just over the map limit (both compressed
+                // to a few kilobytes): the size check decides before the decoder allocates.
+                rng.pick(&self.large).clone()
             }
         };
         Case {
