@@ -1,4 +1,4 @@
-//! Configuration parameters and OpenRTM `.conf` files (SPEC §1 "Configuration parameters",
+//! Configuration parameters and OpenRTM `.conf` files (spec §1 "Configuration parameters",
 //! 000 §4, 002 §4.2). Every test runs natively and as wasm32 under Node.
 
 use rtnav::errors::ConfigError;

@@ -1,7 +1,9 @@
 //! Shared helpers for the whole-system tests (native and wasm32).
 //!
 //! - [`Journal`] and [`Probe`]: a component that records every callback it gets (with its
-//!   [`Tick`]) and fails any callback it is told to, for the lifecycle tests (SPEC §1).
+//!   [`Tick`]) and fails any callback it is told to, for the lifecycle tests (spec §1).
+//! - [`data`]: the external data, read at run time on both targets, and the one-line
+//!   notice of a test skipped without it.
 
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
@@ -9,6 +11,8 @@ use std::fmt::Write as _;
 use std::rc::Rc;
 
 use rtnav::rtc::{Component, ComponentError, ReturnCode, Tick};
+
+pub mod data;
 
 /// The callbacks of seed 003's table ("アクションのまとめ"), in the trait's order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

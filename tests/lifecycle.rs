@@ -1,4 +1,4 @@
-//! The RT-component lifecycle (SPEC §1, seed 003), the multi-rate execution context, data
+//! The RT-component lifecycle (spec §1, seed 003), the multi-rate execution context, data
 //! ports and the IDL types. Every test runs natively and as wasm32 under Node.
 
 use rtnav::errors::LifecycleError;
@@ -11,7 +11,7 @@ use rtnav::rtc::{
 use rtnav_tests::{Call, Callback, Journal, Probe};
 
 // ---------------------------------------------------------------------------------------------
-// The lifecycle table, row by row (SPEC §1).
+// The lifecycle table, row by row (spec §1).
 
 /// The probe under test.
 const P: &str = "Probe0";
@@ -497,7 +497,7 @@ fn events_record_every_state_change_and_failure() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Multi-rate execution in simulated time (SPEC §6, the documented order).
+// Multi-rate execution in simulated time (spec §6, the documented order).
 
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
@@ -612,7 +612,7 @@ fn simulated_time_is_exact_in_integer_nanoseconds() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Data ports (SPEC §1 "InPort<T> / OutPort<T>").
+// Data ports (spec §1 "InPort<T> / OutPort<T>").
 
 #[cfg_attr(not(target_arch = "wasm32"), test)]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
@@ -779,7 +779,7 @@ fn ports_carry_the_newest_value_across_a_connection() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// IDL types: serde round trips (SPEC §1 "Data types follow the IDL").
+// IDL types: serde round trips (spec §1 "Data types follow the IDL").
 
 /// Serializes `value` to `json` exactly, and back to an equal value that serializes the same.
 fn round_trip<T>(value: &T, json: &str)

@@ -1,7 +1,7 @@
 // rtnav page entry: loads the wasm module, creates the Demo handle (the whole system and
 // its renderer, in Rust memory), mounts the stage and the panels, loads the default
 // scenario, runs the clock. No simulation logic lives here: the page owns the clock
-// (requestAnimationFrame), the DOM and the mouse; Rust owns every state (SPEC §1, §6).
+// (requestAnimationFrame), the DOM and the mouse; Rust owns every state (spec §1, §6).
 import init, { Demo } from './pkg/rtnav_wasm.js';
 import { createCrashGuard } from './js/crash.js';
 import { startLoop } from './js/loop.js';

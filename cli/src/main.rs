@@ -1,4 +1,4 @@
-//! `rtnav`: the headless runner (SPEC §0, §6). Runs a scenario to its outcome and prints a
+//! `rtnav`: the headless runner (spec §0, §6). Runs a scenario to its outcome and prints a
 //! summary, writes the final frame as PNG and the telemetry as CSV; or draws the initial
 //! plan of a scenario without driving.
 //!
@@ -19,7 +19,9 @@
 //!
 //! Scenario files name their maps relative to the project's root; the root is found by
 //! walking up from the scenario file to the first folder where the map exists (or given
-//! with `--root`).
+//! with `--root`). A map of the external data (`../shared/data/…`) is read from
+//! `$RTNAV_DATA`, else from `../shared/data` beside the root; without it the runner stops
+//! with an error naming the file and `RTNAV_DATA` (`rtnav::data`).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -27,11 +29,13 @@ use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use rtnav::render::Renderer;
+use rtnav::data::RepoResolver;
+use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
-    DirResolver, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, System,
+    BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
+    System, setup,
 };
-use rtnav_cli::{alloc, data, fuzz, soak};
+use rtnav_cli::{alloc, fuzz, soak};
 
 // Counts allocations: the fuzzer's allocation bounds and the soak's memory figures.
 #[global_allocator]
@@ -215,7 +219,7 @@ fn main() -> ExitCode {
 
 type CliResult<T> = Result<T, String>;
 
-fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)> {
+fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, RepoResolver)> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
     let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
@@ -223,11 +227,11 @@ fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, DirResolver)
         Some(r) => r,
         None => find_root(path, &scenario),
     };
-    Ok((scenario, DirResolver::new(root)))
+    Ok((scenario, RepoResolver::new(root)))
 }
 
 /// The first ancestor of the scenario file (then the working folder) in which the
-/// scenario's map file exists.
+/// scenario's map file exists (a map of the external data: where it exists for that root).
 fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
     let map = match &scenario.map {
         rtnav::system::MapSource::Json { path }
@@ -238,15 +242,20 @@ fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
     start
         .ancestors()
         .skip(1)
-        .find(|dir| dir.join(&map).exists())
+        .find(|dir| {
+            RepoResolver::new(*dir)
+                .locate(&map)
+                .is_ok_and(|file| file.exists())
+        })
         .map(Path::to_path_buf)
         .unwrap_or_else(|| PathBuf::from("."))
 }
 
-fn write_png(system: &mut System, size: (u32, u32), path: &Path) -> CliResult<()> {
+fn write_png(system: &System, size: (u32, u32), path: &Path) -> CliResult<()> {
     let mut renderer = Renderer::new(size.0, size.1).map_err(|e| e.to_string())?;
-    let scene = system.scene().ok_or_else(|| "no map to draw".to_owned())?;
-    let frame = renderer.render(&scene).map_err(|e| e.to_string())?;
+    let frame = renderer
+        .render_system(system, &caption(system), Layers::ALL)
+        .map_err(|e| e.to_string())?;
     let bytes = frame.encode_png().map_err(|e| e.to_string())?;
     std::fs::write(path, bytes).map_err(|e| format!("cannot write `{}`: {e}", path.display()))
 }
@@ -278,22 +287,20 @@ fn run(
     let mut shown = false;
     let mut printed = 0u64;
     loop {
-        let done = run.advance(1000).map_err(|e| e.to_string())?.is_some();
+        let done = run.advance(1000).is_some();
         let system = run.system();
         if csv.is_some() {
-            for s in system.telemetry().since(seq) {
+            for s in system.record().telemetry().since(seq) {
                 s.write_csv_row(&mut rows);
                 rows.push('\n');
             }
-            seq = system.telemetry().total();
+            seq = system.record().telemetry().total();
         }
         if print_events {
-            let events = system.events();
-            let new = (system.event_count() - printed).min(events.len() as u64) as usize;
-            for e in events.iter().skip(events.len() - new) {
+            for e in system.record().events_since(printed) {
                 bar.suspend(|| println!("{e}"));
             }
-            printed = system.event_count();
+            printed = system.record().event_count();
         }
         if !shown && started.elapsed() > Duration::from_millis(500) {
             // A long run: show progress in simulated seconds.
@@ -316,6 +323,7 @@ fn run(
     let wall = started.elapsed().as_secs_f64();
     let report = run.report();
     println!("{report}");
+    println!("status          {}", run.system().status());
     let sim = report.sim_time;
     println!(
         "wall time       {wall:.3} s (real-time factor {:.0}×)",
@@ -342,7 +350,7 @@ fn run(
         println!("telemetry       {} ({} samples)", p.display(), seq);
     }
     if let Some(p) = png {
-        write_png(run.system_mut(), size, p)?;
+        write_png(run.system(), size, p)?;
         println!("frame           {}", p.display());
     }
     Ok(if expectation.is_ok() {
@@ -354,15 +362,16 @@ fn run(
 
 fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
-    let mut system = System::from_scenario(&scenario, &resolver).map_err(|e| e.to_string())?;
-    system.set_full_field(true);
-    let planned = system.preview(5.0).map_err(|e| e.to_string())?;
-    for e in system.events() {
-        if matches!(e.kind, rtnav::system::EventKind::PlanningFailed { .. }) {
+    let options = BuildOptions { full_field: true };
+    let system = setup::build(&scenario, &resolver, &Setup::of(&scenario), options)
+        .map_err(|e| e.to_string())?;
+    let planned = system.mission().plan_sent();
+    for e in system.record().events() {
+        if matches!(e.kind, EventKind::PlanningFailed { .. }) {
             println!("{e}");
         }
     }
-    write_png(&mut system, size, png)?;
+    write_png(&system, size, png)?;
     println!(
         "{}: {} → {}",
         scenario.name,
@@ -372,8 +381,8 @@ fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> C
     Ok(ExitCode::SUCCESS)
 }
 
-/// The system of a scenario as the browser page loads it ([`Session::load_scenario`]:
-/// without the scenario's timed events, the full potential field, the planning preview).
+/// The system of a scenario as the browser page loads it ([`Session::load_scenario`]: the
+/// set-up built with the full potential field).
 fn page_session(path: &Path, root: Option<PathBuf>) -> CliResult<Session> {
     let (scenario, resolver) = load(path, root)?;
     let name = scenario.name.clone();
@@ -388,6 +397,7 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
     let session = page_session(path, root)?;
     let cell = session
         .system()
+        .wiring()
         .inspect_cell(x, y)
         .map_err(|e| e.to_string())?;
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
@@ -409,8 +419,8 @@ fn run_fuzz(
     if replay.is_some() && (seed.is_none() || only.is_empty()) {
         return Err("--case replays one input: give --seed and --target too".to_owned());
     }
-    let root = root.unwrap_or_else(data::project_root);
-    let data_dir = data::data_dir(&root);
+    let root = root.unwrap_or_else(rtnav_cli::project_root);
+    let data_dir = rtnav::data::data_dir(&root).ok();
     let seed = seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
@@ -476,28 +486,33 @@ fn run_soak(
     if !(hours.is_finite() && hours > 0.0) {
         return Err(format!("--hours {hours}: must be a positive number"));
     }
-    let root = root.unwrap_or_else(data::project_root);
+    let root = root.unwrap_or_else(rtnav_cli::project_root);
     let path = scenario.unwrap_or_else(|| root.join("fixtures/scenarios/open_field.json"));
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
     let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
-    let resolver = data::DataResolver::new(&root);
+    let resolver = RepoResolver::new(&root);
     let needs_data = scenario
         .map_files(&resolver)
-        .map(|files| files.iter().any(|f| f.starts_with("../shared/data/")))
-        .unwrap_or_else(|_| format!("{:?}", scenario.map).contains("../shared/data/"));
-    if needs_data && !resolver.has_data() {
-        println!(
-            "soak: {} skipped: its map is in the shared data (../shared/data or RTNAV_DATA), which is not here",
-            scenario.name
-        );
+        .map(|files| {
+            files
+                .iter()
+                .any(|f| rtnav::data::data_relative(f).is_some())
+        })
+        .unwrap_or_else(|_| format!("{:?}", scenario.map).contains(rtnav::data::DATA_PREFIX));
+    if needs_data && let Err(missing) = resolver.data() {
+        println!("soak: {} SKIPPED: {missing}", scenario.name);
         return Ok(ExitCode::SUCCESS);
     }
-    let timeless = Scenario {
-        events: Vec::new(),
-        ..scenario.clone()
-    };
-    let system = System::from_scenario(&timeless, &resolver).map_err(|e| e.to_string())?;
+    // The scenario's set-up (its own parameters included), without its timed events: the
+    // soak makes its own goals and edits.
+    let system = setup::build(
+        &scenario,
+        &resolver,
+        &Setup::of(&scenario),
+        BuildOptions::default(),
+    )
+    .map_err(|e| e.to_string())?;
     let mut options = soak::SoakOptions::new(hours, seed);
     if let Some(d) = scenario
         .config

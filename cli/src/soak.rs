@@ -5,8 +5,9 @@
 //! no new goal accepted for as long) and memory that grows.
 //!
 //! This is one of the two files of the tools that use `System` (the fuzzer's system targets
-//! are the other); it uses only `System::{activate_all, reset_all, set_goal, set_cells, step,
-//! drain_events, stats, state, robot_pose, map, time_ns, telemetry}`.
+//! are the other). Its requests are [`Input`]s (`ActivateAll`, `ResetAll`, `SetGoal`,
+//! `MapUpdate`) through [`System::apply`]; it reads the record (events, telemetry), the
+//! statistics, the state, the robot's pose and the map.
 //!
 //! **Memory**: the bytes live on the heap (the counting allocator, [`crate::alloc`]) and the
 //! resident set size (`/proc/self/statm`, Linux) at the start, once the bounded histories are
@@ -23,9 +24,9 @@ use std::time::{Duration, Instant};
 use rtnav::components::{LocalPathPlanningParams, MotorControlParams};
 use rtnav::global::AStar;
 use rtnav::interfaces::{Direction, Pose};
-use rtnav::map::{Cell, GridMap, within_dmin};
+use rtnav::map::{Cell, GridMap, MapUpdate, within_dmin};
 use rtnav::rtc::Time;
-use rtnav::system::{DEFAULT_TELEMETRY_CAPACITY, EventKind, System, SystemState};
+use rtnav::system::{DEFAULT_TELEMETRY_CAPACITY, EventKind, Input, System, SystemState};
 
 use crate::alloc;
 use crate::rng::Rng;
@@ -302,14 +303,17 @@ pub struct Soak {
     next_edit_ns: u64,
     next_minute_ns: u64,
     bumps_seen: u64,
+    /// Events of the record read so far.
+    events_seen: u64,
 }
 
 impl Soak {
     /// A soak of `system` (map loaded, start and `goal` set, components Inactive, as
-    /// `System::from_scenario` leaves it); activates every component.
+    /// `setup::build` leaves it); activates every component.
     pub fn new(mut system: System, goal: Option<Pose>, options: SoakOptions) -> Self {
         let now = system.time_ns();
-        system.activate_all();
+        // Activating every Inactive component cannot be refused.
+        let _ = system.apply(&Input::ActivateAll);
         let pose = system.robot_pose();
         let end_ns = now + (options.hours * 3600.0 * NS_PER_S as f64) as u64;
         let mut rng = Rng::new(options.seed);
@@ -324,7 +328,6 @@ impl Soak {
             ..SoakReport::default()
         };
         Self {
-            system,
             options,
             rng,
             report,
@@ -344,6 +347,8 @@ impl Soak {
             next_edit_ns,
             next_minute_ns: now + 60 * NS_PER_S,
             bumps_seen: 0,
+            events_seen: system.record().event_count(),
+            system,
         }
     }
 
@@ -395,7 +400,7 @@ impl Soak {
         let s = &self.system;
         self.report.sim_hours = s.time_ns() as f64 / 3.6e12;
         self.report.wall = self.started.elapsed();
-        self.report.trace_hash = s.telemetry().trace_hash();
+        self.report.trace_hash = s.record().telemetry().trace_hash();
         self.report.memory.heap_end = alloc::total_live();
         self.report.memory.rss_end = rss();
         self.report
@@ -424,7 +429,10 @@ impl Soak {
     }
 
     fn read_events(&mut self) {
-        for e in self.system.drain_events() {
+        let record = self.system.record();
+        let events: Vec<_> = record.events_since(self.events_seen).cloned().collect();
+        self.events_seen = record.event_count();
+        for e in events {
             match e.kind {
                 EventKind::Arrived { .. } => {
                     self.report.arrivals += 1;
@@ -513,8 +521,9 @@ impl Soak {
     /// After an Error (a bump, a failed callback): reset everything, activate, new goal.
     fn recover(&mut self, now: u64) {
         self.report.recoveries += 1;
-        self.system.reset_all();
-        self.system.activate_all();
+        // Neither can be refused (each acts on the components in the right state).
+        let _ = self.system.apply(&Input::ResetAll);
+        let _ = self.system.apply(&Input::ActivateAll);
         self.arrived = true;
         self.next_goal_ns = now;
         self.want_goal_since_ns.get_or_insert(now);
@@ -533,7 +542,10 @@ impl Soak {
         let Some(goal) = self.pick_goal() else {
             return;
         };
-        match self.system.set_goal(goal, Direction::Forward) {
+        match self.system.apply(&Input::SetGoal {
+            goal,
+            direction: Direction::Forward,
+        }) {
             Ok(()) => {
                 self.report.goals += 1;
                 self.goal = Some(goal);
@@ -598,7 +610,7 @@ impl Soak {
         });
         for cells in gone {
             let list: Vec<(i64, i64, i16)> = cells.iter().map(|&(x, y)| (x, y, 0)).collect();
-            if self.system.set_cells(&list).is_ok() {
+            if self.system.apply(&Input::MapUpdate { cells: list }).is_ok() {
                 self.report.edits_removed += 1;
             }
             for c in cells {
@@ -614,7 +626,7 @@ impl Soak {
         }
         if let Some(cells) = self.pick_edit() {
             let list: Vec<(i64, i64, i16)> = cells.iter().map(|&(x, y)| (x, y, 1)).collect();
-            if self.system.set_cells(&list).is_ok() {
+            if self.system.apply(&Input::MapUpdate { cells: list }).is_ok() {
                 self.report.edits_added += 1;
                 self.ours.extend(cells.iter().copied());
                 let life = self.rng.range(15.0, 45.0);
@@ -682,11 +694,9 @@ impl Soak {
         goal: Pose,
     ) -> bool {
         let mut edited = map.clone();
-        let x: Vec<i32> = cells.iter().map(|c| c.0 as i32).collect();
-        let y: Vec<i32> = cells.iter().map(|c| c.1 as i32).collect();
-        let v = vec![1i16; cells.len()];
+        let list: Vec<(i64, i64, i16)> = cells.iter().map(|&(x, y)| (x, y, 1)).collect();
         if edited
-            .map_update(&x, &y, &v, cells.len() as i32, Time::default())
+            .map_update(&MapUpdate::from_cells(&list, Time::default()))
             .is_err()
         {
             return false;
@@ -706,7 +716,7 @@ impl Soak {
     fn sample_memory(&mut self, now: u64) {
         let live = alloc::total_live();
         let m = &mut self.report.memory;
-        let full = self.system.telemetry().total() >= DEFAULT_TELEMETRY_CAPACITY as u64;
+        let full = self.system.record().telemetry().total() >= DEFAULT_TELEMETRY_CAPACITY as u64;
         match m.heap_warm {
             None if full => {
                 m.heap_warm = Some(live);

@@ -2,7 +2,7 @@
 
 use std::process::Command;
 
-use rtnav::system::{DirResolver, Scenario, System};
+use rtnav::system::{BuildOptions, DirResolver, Scenario, Setup, setup};
 
 const SCENARIO: &str = "../fixtures/scenarios/open_field.json";
 
@@ -40,14 +40,16 @@ fn inspect_prints_the_cell_as_one_line_of_json() {
 
     // The same as the library gives for the scenario loaded as the page loads it.
     let scenario = Scenario::from_json(&std::fs::read_to_string(SCENARIO).unwrap()).unwrap();
-    let timeless = Scenario {
-        events: Vec::new(),
-        ..scenario
-    };
-    let mut system = System::from_scenario(&timeless, &DirResolver::new("..")).unwrap();
-    system.set_full_field(true);
-    system.preview(5.0).unwrap();
-    let expected = serde_json::to_string(&system.inspect_cell(40, 30).unwrap()).unwrap();
+    let options = BuildOptions { full_field: true };
+    let system = setup::build(
+        &scenario,
+        &DirResolver::new(".."),
+        &Setup::of(&scenario),
+        options,
+    )
+    .unwrap();
+    let cell = system.wiring().inspect_cell(40, 30).unwrap();
+    let expected = serde_json::to_string(&cell).unwrap();
     assert_eq!(text.trim_end(), expected);
 }
 

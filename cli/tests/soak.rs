@@ -4,9 +4,9 @@
 
 use std::path::PathBuf;
 
-use rtnav::system::{ComponentKind, Scenario, System};
+use rtnav::data::RepoResolver;
+use rtnav::system::{BuildOptions, ComponentKind, Input, Scenario, Setup, System, setup};
 use rtnav_cli::alloc::Counting;
-use rtnav_cli::data::DataResolver;
 use rtnav_cli::soak::{Soak, SoakOptions};
 
 #[global_allocator]
@@ -16,7 +16,13 @@ fn open_field() -> (System, Scenario) {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
     let text = std::fs::read_to_string(root.join("fixtures/scenarios/open_field.json")).unwrap();
     let scenario = Scenario::from_json(&text).unwrap();
-    let system = System::from_scenario(&scenario, &DataResolver::new(&root)).unwrap();
+    let system = setup::build(
+        &scenario,
+        &RepoResolver::new(&root),
+        &Setup::of(&scenario),
+        BuildOptions::default(),
+    )
+    .unwrap();
     (system, scenario)
 }
 
@@ -45,7 +51,9 @@ fn a_robot_that_stops_with_a_goal_held_is_a_stuck_period() {
     soak.run_for(3.0);
     // DriveControl stops commanding: MotorControl brakes, the robot stands with its goal.
     soak.system_mut()
-        .deactivate(ComponentKind::DriveControl)
+        .apply(&Input::Deactivate {
+            component: ComponentKind::DriveControl,
+        })
         .unwrap();
     soak.run_for(70.0);
     let r = soak.finish();

@@ -1,11 +1,11 @@
-//! The exact Euclidean distance transform (SPEC §2) on a 1000 × 1000 map: building a map
+//! The exact Euclidean distance transform (spec §2) on a 1000 × 1000 map: building a map
 //! (validation + full transform), a `MapUpdate` touching many columns (full recompute), and
 //! a one-cell `MapUpdate` (incremental: one column and the rows it changed).
 //!
 //! `cargo bench -p rtnav --bench distance -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use rtnav::map::GridMap;
+use rtnav::map::{GridMap, MapUpdate};
 use rtnav::rtc::Time;
 use std::hint::black_box;
 
@@ -56,8 +56,14 @@ fn bench(c: &mut Criterion) {
             flip = 1 - flip;
             let vs = vec![flip; xs.len()];
             black_box(
-                m.map_update(&xs, &ys, &vs, xs.len() as i32, Time::default())
-                    .unwrap(),
+                m.map_update(&MapUpdate {
+                    x: xs.to_vec(),
+                    y: ys.to_vec(),
+                    value: vs.to_vec(),
+                    num: xs.len() as i32,
+                    tm: Time::default(),
+                })
+                .unwrap(),
             )
         })
     });
@@ -67,8 +73,14 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             flip = 1 - flip;
             black_box(
-                m.map_update(&[321], &[654], &[flip], 1, Time::default())
-                    .unwrap(),
+                m.map_update(&MapUpdate {
+                    x: vec![321],
+                    y: vec![654],
+                    value: vec![flip],
+                    num: 1,
+                    tm: Time::default(),
+                })
+                .unwrap(),
             )
         })
     });

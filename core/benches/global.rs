@@ -1,4 +1,4 @@
-//! A* on the MovingAI benchmark maps (SPEC §5 "GlobalPathPlanning"), side by side with the
+//! A* on the MovingAI benchmark maps (spec §5 "GlobalPathPlanning"), side by side with the
 //! `pathfinding` crate's `astar` on the same grid and rules (8 moves, octile costs, no corner
 //! cutting; its costs are integers, straight 2^32 and diagonal round(√2 · 2^32)).
 //!
@@ -13,16 +13,18 @@
 //!
 //! Full mode (`RTNAV_BENCH_FULL=1`): one pass over *every* scenario of every map with each
 //! planner, checking that both find paths of the same length, and a table of total times.
+//!
+//! The benchmark is external data (`movingai/` of `$RTNAV_DATA`, else `../shared/data`):
+//! without it this says on one line that it is skipped.
 
 use std::hint::black_box;
+use std::io::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 use criterion::Criterion;
 use rtnav::global::AStar;
 use rtnav::map::formats::movingai::{self, ScenProblem};
-
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/movingai");
 
 /// (map, slice: every N-th problem per criterion iteration).
 const MAPS: [(&str, usize); 5] = [
@@ -54,14 +56,12 @@ struct Case {
     problems: Vec<ScenProblem>,
 }
 
-fn load() -> Vec<Case> {
+fn load(data: &Path) -> Vec<Case> {
     MAPS.iter()
         .map(|&(name, slice)| {
-            let map =
-                movingai::load_map_file(Path::new(DATA).join(format!("{name}.map"))).expect("map");
+            let map = movingai::load_map_file(data.join(format!("{name}.map"))).expect("map");
             let problems =
-                movingai::load_scen_file(Path::new(DATA).join(format!("{name}.map.scen")))
-                    .expect("scen");
+                movingai::load_scen_file(data.join(format!("{name}.map.scen"))).expect("scen");
             Case {
                 name: name.rsplit('/').next().unwrap_or(name).to_owned(),
                 slice,
@@ -188,7 +188,18 @@ fn full_mode(cases: &mut [Case]) {
 }
 
 fn main() {
-    let mut cases = load();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let data = match rtnav::data::data_dir(&root) {
+        Ok(dir) => dir.join("movingai"),
+        Err(why) => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "SKIPPED the global benchmark (astar/*): {why}"
+            );
+            return;
+        }
+    };
+    let mut cases = load(&data);
     if std::env::var_os("RTNAV_BENCH_FULL").is_some() {
         full_mode(&mut cases);
     } else {

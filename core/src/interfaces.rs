@@ -43,7 +43,7 @@ pub enum Direction {
 }
 
 impl Direction {
-    /// From the seed's `short`: 1 → Forward, 2 → Backward, anything else `None` (SPEC §3:
+    /// From the seed's `short`: 1 → Forward, 2 → Backward, anything else `None` (spec §3:
     /// "anything else is an error").
     pub fn from_short(value: i16) -> Option<Self> {
         match value {

@@ -5,11 +5,16 @@
 //! controller, the differential-drive physics, the OpenRTM-style component lifecycle, the
 //! whole system and its renderer. It knows nothing of the browser: `rtnav-wasm` wraps it.
 //!
-//! The working specification is `SPEC.md` (in the project's shared folder); doc comments
-//! cite its sections and the seed documents' sections (e.g. `000 §5.2.4.9`).
+//! The specification is `docs/spec.md` in the repository: §0–§6 describe the system and the
+//! project's decisions, its second part the three seed documents section by section. Doc
+//! comments cite both (`spec §3`, older ones `spec §3`: the same section; `000 §5.2.4.9`).
+//!
+//! Real maps nobody on the project wrote (the MovingAI benchmark, ROS maps) are external
+//! data, found at run time ([`data`]: `$RTNAV_DATA`, else `../shared/data`).
 #![warn(missing_docs)]
 
 pub mod components;
+pub mod data;
 pub mod errors;
 pub mod global;
 pub mod interfaces;

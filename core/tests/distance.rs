@@ -1,4 +1,4 @@
-//! SPEC §2: the grid map and its obstacle distances.
+//! spec §2: the grid map and its obstacle distances.
 //! - The exact Euclidean distance transform equals a brute-force distance on random maps
 //!   (proptest), also after random `MapUpdate`s (kept current incrementally).
 //! - `SetMap` / `MapUpdate` refuse bad input with an error naming the problem, and change
@@ -6,11 +6,11 @@
 
 use proptest::prelude::*;
 use rtnav::errors::MapError;
-use rtnav::map::{GridMap, MAX_CELLS};
+use rtnav::map::{GridMap, MAX_CELLS, MapUpdate};
 use rtnav::rtc::Time;
 
 /// Brute force: metres from each cell centre to the nearest obstacle centre, the ring of
-/// cells around the map counting as obstacles (SPEC §2), as `√d² · GridSize`.
+/// cells around the map counting as obstacles (spec §2), as `√d² · GridSize`.
 fn brute(map: &GridMap) -> Vec<f64> {
     let (w, h) = (map.width() as i64, map.height() as i64);
     let mut out = Vec::with_capacity((w * h) as usize);
@@ -75,7 +75,7 @@ proptest! {
             let ys: Vec<i32> = inside.iter().map(|u| i32::from(u.1)).collect();
             let vs: Vec<i16> = inside.iter().map(|u| i16::from(u.2)).collect();
             let tm = Time { sec: n as u32 + 1, nsec: 7 };
-            map.map_update(&xs, &ys, &vs, xs.len() as i32, tm).unwrap();
+            map.map_update(&MapUpdate { x: xs.to_vec(), y: ys.to_vec(), value: vs.to_vec(), num: xs.len() as i32, tm: tm }).unwrap();
             prop_assert_eq!(map.version(), tm);
             prop_assert_eq!(map.distances(), &brute(&map)[..]);
             // And equal to a map built afresh from the same cells.
@@ -108,7 +108,7 @@ proptest! {
         let mut map = GridMap::new(w, h, 0.1, (0.0, 0.0), cells).unwrap();
         for (x, y, v) in updates {
             if x < w && y < h {
-                map.map_update(&[x as i32], &[y as i32], &[i16::from(v)], 1, Time::default())
+                map.map_update(&MapUpdate { x: vec![x as i32], y: vec![y as i32], value: vec![i16::from(v)], num: 1, tm: Time::default() })
                     .unwrap();
                 prop_assert_eq!(map.distances(), &brute(&map)[..]);
             }
@@ -123,7 +123,16 @@ fn a_big_update_recomputes_everything_exactly() {
     let xs: Vec<i32> = (0..16).collect();
     let ys = vec![4; 16];
     let vs: Vec<i16> = (0..16).map(|x| i16::from(x % 3 != 0)).collect();
-    assert_eq!(map.map_update(&xs, &ys, &vs, 16, Time::default()), Ok(10));
+    assert_eq!(
+        map.map_update(&MapUpdate {
+            x: xs.to_vec(),
+            y: ys.to_vec(),
+            value: vs.to_vec(),
+            num: 16,
+            tm: Time::default()
+        }),
+        Ok(10)
+    );
     assert_eq!(map.distances(), &brute(&map)[..]);
 }
 
@@ -132,11 +141,23 @@ fn a_cell_listed_twice_takes_its_last_value() {
     let mut map = GridMap::new(3, 3, 1.0, (0.0, 0.0), vec![0; 9]).unwrap();
     // (1, 1) set and cleared again: nothing changed in the end.
     assert_eq!(
-        map.map_update(&[1, 1], &[1, 1], &[1, 0], 2, Time::default()),
+        map.map_update(&MapUpdate {
+            x: vec![1, 1],
+            y: vec![1, 1],
+            value: vec![1, 0],
+            num: 2,
+            tm: Time::default()
+        }),
         Ok(0)
     );
     assert_eq!(
-        map.map_update(&[1, 1, 2], &[1, 1, 0], &[0, 1, 1], 3, Time::default()),
+        map.map_update(&MapUpdate {
+            x: vec![1, 1, 2],
+            y: vec![1, 1, 0],
+            value: vec![0, 1, 1],
+            num: 3,
+            tm: Time::default()
+        }),
         Ok(2)
     );
     assert!(map.is_obstacle(1, 1) && map.is_obstacle(2, 0));
@@ -208,39 +229,99 @@ fn map_update_is_all_or_nothing() {
     let before = map.clone();
     let tm = Time { sec: 9, nsec: 1 };
     refused(
-        map.map_update(&[0, 1], &[0], &[1, 1], 2, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0, 1],
+            y: vec![0],
+            value: vec![1, 1],
+            num: 2,
+            tm: tm,
+        }),
         "MapUpdate: Y has 1 entries, but num = 2",
     );
     refused(
-        map.map_update(&[0, 1], &[0, 1], &[1], 2, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0, 1],
+            y: vec![0, 1],
+            value: vec![1],
+            num: 2,
+            tm: tm,
+        }),
         "value has 1 entries, but num = 2",
     );
     refused(
-        map.map_update(&[0], &[0], &[1], 2, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0],
+            y: vec![0],
+            value: vec![1],
+            num: 2,
+            tm: tm,
+        }),
         "X has 1 entries, but num = 2",
     );
-    refused(map.map_update(&[], &[], &[], -1, tm), "num = -1");
+    refused(
+        map.map_update(&MapUpdate {
+            x: vec![],
+            y: vec![],
+            value: vec![],
+            num: -1,
+            tm: tm,
+        }),
+        "num = -1",
+    );
     // The first entries are fine; the last is outside: nothing is applied.
     refused(
-        map.map_update(&[0, 1, 3], &[0, 0, 0], &[1, 1, 1], 3, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0, 1, 3],
+            y: vec![0, 0, 0],
+            value: vec![1, 1, 1],
+            num: 3,
+            tm: tm,
+        }),
         "cell (3, 0) is outside the 3×2 map",
     );
     refused(
-        map.map_update(&[0, -1], &[0, 0], &[1, 1], 2, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0, -1],
+            y: vec![0, 0],
+            value: vec![1, 1],
+            num: 2,
+            tm: tm,
+        }),
         "cell (-1, 0) is outside",
     );
     refused(
-        map.map_update(&[0, 1], &[0, 2], &[1, 1], 2, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0, 1],
+            y: vec![0, 2],
+            value: vec![1, 1],
+            num: 2,
+            tm: tm,
+        }),
         "cell (1, 2) is outside",
     );
     refused(
-        map.map_update(&[0, 1], &[0, 0], &[1, 2], 2, tm),
+        map.map_update(&MapUpdate {
+            x: vec![0, 1],
+            y: vec![0, 0],
+            value: vec![1, 2],
+            num: 2,
+            tm: tm,
+        }),
         "value[1] = 2",
     );
     assert_eq!(map, before);
     assert_eq!(map.version(), Time::default());
     // A valid update applies and stamps the version.
-    assert_eq!(map.map_update(&[2], &[1], &[1], 1, tm), Ok(1));
+    assert_eq!(
+        map.map_update(&MapUpdate {
+            x: vec![2],
+            y: vec![1],
+            value: vec![1],
+            num: 1,
+            tm: tm
+        }),
+        Ok(1)
+    );
     assert_eq!(map.version(), tm);
     assert!(map.is_obstacle(2, 1));
 }

@@ -1,4 +1,4 @@
-//! DriveControl (SPEC §5) alone, and closed loop with MotorControl, the physics and
+//! DriveControl (spec §5) alone, and closed loop with MotorControl, the physics and
 //! Localization: DriveControl at 50 Hz, the rest at 1 kHz, in one execution context.
 
 use core::f64::consts::PI;
@@ -140,6 +140,7 @@ fn parameters_have_units_ranges_and_always_reflection() {
             ("GoalAngleTolerance", "rad", 0.01),
             ("MinVelocity", "m/s", 0.03),
             ("HeadingGain", "1/s", 2.0),
+            ("SafetyMargin", "m", 0.01),
         ]
     );
     assert!(
@@ -246,7 +247,7 @@ fn a_large_heading_error_turns_on_the_spot_first() {
 
 // ------------------------------------------------------------ closed loop
 
-/// PhysicsSim → MotorControl → Localization → DriveControl → MotorControl, wired as SPEC §0,
+/// PhysicsSim → MotorControl → Localization → DriveControl → MotorControl, wired as spec §0,
 /// the physics in RH0's model frame.
 struct Rig {
     ec: ExecutionContext,
@@ -466,4 +467,60 @@ fn drives_the_same_l_backward_on_odometry() {
             Arrived
         ]
     );
+}
+
+// ------------------------------------------------------------ the clearance check
+
+#[test]
+fn the_clearance_check_stops_the_body_short_of_an_obstacle_on_the_path_and_says_so() {
+    use rtnav::map::GridMap;
+    // 60 × 20 cells of 0.1 m; a wall at x = 3.0 .. 3.1 m across the corridor.
+    let mut data = vec![0i16; 60 * 20];
+    for y in 0..20 {
+        data[30 + y * 60] = 1;
+    }
+    let map = GridMap::from_map_data(&data, 60, 20, 0.1).unwrap();
+    let mut b = Bench::new();
+    b.d.set_map(map);
+    b.d.set_body_radius(0.45).unwrap();
+    assert!(b.d.set_body_radius(f64::NAN).is_err());
+    let notices = InPort::new("SafetyStop");
+    b.d.safety_stop.connect(&notices);
+    // A path straight through the wall (as a stale plan would be).
+    b.path(&[(0.5, 1.0), (5.5, 1.0)], Direction::Forward, 0.0);
+    let mut p = Pose::new(0.5, 1.0, 0.0);
+    let mut slowest_near = f64::INFINITY;
+    for k in 0..500 {
+        b.pose(k, p);
+        let (v, w) = b.exec(k);
+        // A kinematic robot following the command exactly.
+        p = rtnav::motion::arc_step(p, v * 0.02, w * 0.02);
+        if p.x > 2.4 {
+            slowest_near = slowest_near.min(v.abs());
+        }
+    }
+    let face = 3.0 - 0.45;
+    assert!(
+        p.x <= face - 0.01 + 1e-9,
+        "the body stops short: x = {}",
+        p.x
+    );
+    assert!(p.x > face - 0.05, "but not far short: x = {}", p.x);
+    assert!(slowest_near < 0.01);
+    assert!(
+        matches!(b.d.status(), DriveStatus::SafetyStop { ahead } if *ahead < 0.01),
+        "{}",
+        b.d.status()
+    );
+    assert!(
+        b.d.status()
+            .to_string()
+            .starts_with("safety stop: obstacle")
+    );
+    assert!(notices.read().is_some(), "a new plan was asked for");
+    // Without a map, nothing is checked: the command is the path follower's.
+    let mut free = Bench::new();
+    free.path(&[(0.5, 1.0), (5.5, 1.0)], Direction::Forward, 0.0);
+    free.pose(0, Pose::new(2.5, 1.0, 0.0));
+    assert!(free.exec(0).0 > 0.0);
 }

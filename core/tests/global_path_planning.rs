@@ -1,14 +1,14 @@
-//! SPEC §5 "GlobalPathPlanning": the A* planner against an independent reference on random
+//! spec §5 "GlobalPathPlanning": the A* planner against an independent reference on random
 //! maps (with and without `dmin`), and the RT-component on the framework: services, the
 //! `dmin` parameter, the `GlobalPathCourse` and `PlanningFailure` ports, and its errors.
 
 use proptest::prelude::*;
-use rtnav::components::GlobalPathPlanning;
+use rtnav::components::{GlobalPathPlanning, PlanReason};
 use rtnav::errors::{Error, GlobalPlanningError, MapError};
 use rtnav::global::{AStar, OctileCost};
 use rtnav::interfaces::{GlobalPathCourse, PlanningFailure, Pose};
 use rtnav::map::formats::json;
-use rtnav::map::{Cell, GridMap};
+use rtnav::map::{Cell, GridMap, MapUpdate};
 use rtnav::rtc::{ComponentId, ConfigAccess, ExecutionContext, InPort, LifecycleState, Time};
 
 // ------------------------------------------------------------------ planner vs reference
@@ -260,15 +260,16 @@ fn dmin_blocks_cells_near_obstacles_and_takes_effect_at_the_next_plan() {
     let g = 0.5;
     rig.gpp().set_map(room(g));
     assert_eq!(rig.gpp().params().dmin, 0.5);
-    // (1, 3) is next to the wall: distance 0.5 m ≤ dmin 0.5 → blocked.
+    // (1, 3) and (10, 3) are next to the walls: distance 0.5 m ≤ dmin 0.5 → blocked. Spec §3
+    // Decision 0.2 "escape from the margin": the start escapes; the goal is checked strictly.
     rig.request(at((1, 3), g), at((10, 3), g));
     assert!(!rig.course.is_new());
     let reason = rig.failure_reason();
-    assert!(reason.contains("start cell (1, 3) is blocked"), "{reason}");
+    assert!(reason.contains("goal cell (10, 3) is blocked"), "{reason}");
     assert!(matches!(
         rig.gpp().last_error(),
         Some(GlobalPlanningError::Blocked {
-            which: "start",
+            which: "goal",
             dmin: 0.5,
             ..
         })
@@ -332,13 +333,21 @@ fn services_refuse_bad_input_and_keep_what_they_hold() {
     let mut rig = Rig::new();
     let gpp = rig.gpp();
     assert!(matches!(
-        gpp.map_update(&[1], &[1], &[1], 1, Time::default()),
+        gpp.map_update(&MapUpdate {
+            x: vec![1],
+            y: vec![1],
+            value: vec![1],
+            num: 1,
+            tm: Time::default()
+        }),
         Err(Error::GlobalPlanning(GlobalPlanningError::NoMap))
     ));
     gpp.set_map(room(1.0));
     let before = gpp.map().unwrap().clone();
+    // `SetMap` takes a `GridMap`, valid by construction: bad map data is refused before it
+    // can reach the component.
     assert!(matches!(
-        gpp.set_map_data(&[0, 1, 2], 3, 1, 1.0),
+        GridMap::from_map_data(&[0, 1, 2], 3, 1, 1.0),
         Err(MapError::BadCellValue {
             index: 2,
             value: 2,
@@ -346,16 +355,28 @@ fn services_refuse_bad_input_and_keep_what_they_hold() {
         })
     ));
     assert!(matches!(
-        gpp.set_map_data(&[0; 3], 3, 1, 0.0),
+        GridMap::from_map_data(&[0; 3], 3, 1, 0.0),
         Err(MapError::BadGridSize { .. })
     ));
     assert_eq!(gpp.map(), Some(&before));
     assert!(matches!(
-        gpp.map_update(&[1, 2], &[1], &[1, 1], 2, Time::default()),
+        gpp.map_update(&MapUpdate {
+            x: vec![1, 2],
+            y: vec![1],
+            value: vec![1, 1],
+            num: 2,
+            tm: Time::default()
+        }),
         Err(Error::Map(MapError::UpdateLength { array: "Y", .. }))
     ));
     assert!(matches!(
-        gpp.map_update(&[12], &[1], &[1], 1, Time::default()),
+        gpp.map_update(&MapUpdate {
+            x: vec![12],
+            y: vec![1],
+            value: vec![1],
+            num: 1,
+            tm: Time::default()
+        }),
         Err(Error::Map(MapError::CellOutside { .. }))
     ));
     assert_eq!(gpp.map(), Some(&before));
@@ -372,30 +393,39 @@ fn services_refuse_bad_input_and_keep_what_they_hold() {
 }
 
 #[test]
-fn a_map_update_changes_the_next_plan() {
+fn a_map_update_that_blocks_the_route_replans_around_it() {
     let mut rig = Rig::new();
     rig.gpp().set_map(room(1.0));
     rig.gpp().config_mut().set("dmin", 0.0).unwrap();
     rig.request(at((1, 1), 1.0), at((10, 1), 1.0));
     assert_eq!(rig.gpp().path_length(), Some(9.0));
+    rig.course.read();
+    // A cell away from the route: the route stands.
+    assert_eq!(
+        rig.gpp()
+            .map_update(&MapUpdate::from_cells(&[(3, 5, 1)], Time::default())),
+        Ok(1)
+    );
+    assert!(!rig.gpp().is_requested());
     // A wall across the bottom rows at x = 7, leaving only y = 4, 5 open.
     let changed = rig
         .gpp()
-        .map_update(
-            &[7, 7, 7],
-            &[1, 2, 3],
-            &[1, 1, 1],
-            3,
-            Time { sec: 5, nsec: 0 },
-        )
+        .map_update(&MapUpdate {
+            x: vec![7, 7, 7],
+            y: vec![1, 2, 3],
+            value: vec![1, 1, 1],
+            num: 3,
+            tm: Time { sec: 5, nsec: 0 },
+        })
         .unwrap();
     assert_eq!(changed, 3);
     assert_eq!(rig.gpp().map().unwrap().version(), Time { sec: 5, nsec: 0 });
-    assert!(
-        !rig.gpp().is_requested(),
-        "a MapUpdate does not replan by itself"
-    );
-    rig.request(at((1, 1), 1.0), at((10, 1), 1.0));
+    // Spec §5 Decision 0.2: an update that blocks the route replans it, from where the robot
+    // is (here the start: no pose has come in).
+    assert!(rig.gpp().is_requested(), "the wall blocks the route");
+    rig.ec.tick();
+    assert!(rig.course.is_new());
+    assert_eq!(rig.gpp().last_reason(), Some(PlanReason::MapChanged));
     let plan = rig.gpp().last_plan().unwrap();
     assert!(plan.cells.iter().all(|&(x, y)| x != 7 || y >= 4));
     assert_eq!(

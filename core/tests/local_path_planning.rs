@@ -1,4 +1,4 @@
-//! The LocalPathPlanning RT-component (seed 000, SPEC §3): its services, flags, ports,
+//! The LocalPathPlanning RT-component (seed 000, spec §3): its services, flags, ports,
 //! parameters and the behaviour on every tick, on small hand-made maps with exact
 //! expectations. Test names carry the seed section they check.
 
@@ -8,9 +8,9 @@ use rtnav::components::{LocalPathFlags, LocalPathPlanning, LocalPathPlanningPara
 use rtnav::errors::{Error, LocalPathError, MapError};
 use rtnav::interfaces::{Direction, GlobalPathCourse, Pose};
 use rtnav::local::FieldExtent;
-use rtnav::map::Cell;
+use rtnav::map::{Cell, MapUpdate};
 use rtnav::rtc::{
-    Component, ConfigAccess, ExecutionContext, ParameterSet, Reflection, Tick, TimedDouble,
+    Component, ConfigAccess, ExecutionContext, ParameterSet, Reflection, Tick, Time, TimedDouble,
     TimedPosition,
 };
 
@@ -60,12 +60,15 @@ fn send_path(c: &mut LocalPathPlanning, cells: &[Cell]) {
         .unwrap();
 }
 
-/// Map, start/goal, the straight global path, and one tick to send it.
+/// Map, start/goal, the straight global path, and one tick to plan and send it (spec §3
+/// Decision 0.2: a new course is planned with the potential field at once, so every test
+/// starts with one plan made).
 fn ready(blocked: &[Cell]) -> LocalPathPlanning {
     let mut c = component(blocked);
     set_position(&mut c, 1);
     send_path(&mut c, &straight_path());
     c.on_execute(&tick(0)).unwrap();
+    assert_eq!(c.plan_count(), 1);
     assert_eq!(c.drive_cons.write_count(), 1);
     c
 }
@@ -318,21 +321,50 @@ fn s3_2_2_1_set_map_and_map_update_refuse_bad_input() {
     assert_eq!(c.map().unwrap().width(), W);
     let before = c.map().unwrap().clone();
     assert!(matches!(
-        c.map_update(&[1, 2], &[1, 1], &[1, 5], 2, 0, 0),
+        c.map_update(&MapUpdate {
+            x: vec![1, 2],
+            y: vec![1, 1],
+            value: vec![1, 5],
+            num: 2,
+            tm: Time { sec: 0, nsec: 0 }
+        }),
         Err(Error::Map(MapError::BadCellValue { index: 1, .. }))
     ));
     assert!(matches!(
-        c.map_update(&[1, 2], &[1], &[1, 1], 2, 0, 0),
+        c.map_update(&MapUpdate {
+            x: vec![1, 2],
+            y: vec![1],
+            value: vec![1, 1],
+            num: 2,
+            tm: Time { sec: 0, nsec: 0 }
+        }),
         Err(Error::Map(MapError::UpdateLength { array: "Y", .. }))
     ));
     assert_eq!(
-        c.map_update(&[1], &[1], &[1], 1, 5, 1_000_000_000),
-        Err(Error::LocalPath(LocalPathError::BadTimestamp {
+        c.map_update(&MapUpdate {
+            x: vec![1],
+            y: vec![1],
+            value: vec![1],
+            num: 1,
+            tm: Time {
+                sec: 5,
+                nsec: 1_000_000_000
+            }
+        }),
+        Err(Error::Map(MapError::BadTimestamp {
+            what: "MapUpdate",
             nsec: 1_000_000_000
         }))
     );
     assert_eq!(c.map(), Some(&before));
-    c.map_update(&[1, 3], &[1, 3], &[1, 0], 2, 7, 9).unwrap();
+    c.map_update(&MapUpdate {
+        x: vec![1, 3],
+        y: vec![1, 3],
+        value: vec![1, 0],
+        num: 2,
+        tm: Time { sec: 7, nsec: 9 },
+    })
+    .unwrap();
     let m = c.map().unwrap();
     assert!(m.is_obstacle(1, 1) && !m.is_obstacle(3, 3));
     assert_eq!((m.version().sec, m.version().nsec), (7, 9));
@@ -341,7 +373,7 @@ fn s3_2_2_1_set_map_and_map_update_refuse_bad_input() {
 // ----- 000 §5.2.4.3: the global path as received -----
 
 #[test]
-fn s5_2_4_3_global_path_course_sends_its_control_points_once_without_a_field() {
+fn s5_2_4_3_a_course_before_set_position_is_sent_as_received_once_without_a_field() {
     let mut c = component(&[]);
     // East from (4, 4) to (20, 4), then north to (20, 12): an L.
     let mut path: Vec<Cell> = (4..=20).map(|x| (x, 4)).collect();
@@ -367,18 +399,24 @@ fn s5_2_4_3_global_path_course_sends_its_control_points_once_without_a_field() {
     assert_eq!(c.merged_path(), &path[..]);
     assert_eq!(c.plan_count(), 0);
     assert!(c.potential_field().is_none());
-    // Sent once: the next ticks and the same path again send nothing.
+    // Sent once: the next ticks send nothing.
     c.on_execute(&tick(2)).unwrap();
-    send_path(&mut c, &path);
     c.on_execute(&tick(3)).unwrap();
     assert_eq!(c.drive_cons.write_count(), 1);
     assert_eq!(c.invent_gui_cons.write_count(), 1);
     assert_eq!(c.bump_cons.write_count(), 1);
-    // Direction 2 drives the same points backward.
+    // Spec §3 Decision 0.2: a course that comes while start and goal are held is planned
+    // with the potential field at once.
+    send_path(&mut c, &path);
+    c.on_execute(&tick(4)).unwrap();
+    assert_eq!(c.plan_count(), 1);
+    assert!(c.potential_field().is_some());
+    assert_eq!(c.merged_path().last(), Some(&(20, 12)));
+    // Direction 2 drives backward.
     c.set_position(s.0, s.1, PI, g.0, g.1, FRAC_PI_2, 2)
         .unwrap();
     send_path(&mut c, &path);
-    c.on_execute(&tick(4)).unwrap();
+    c.on_execute(&tick(5)).unwrap();
     assert_eq!(c.drive_cons.last().unwrap().direction, Direction::Backward);
 }
 
@@ -394,11 +432,22 @@ fn s5_2_4_3_a_global_path_that_misses_the_goal_cell_is_a_failure() {
         c.last_failure().unwrap().reason,
         "the held path does not reach the goal cell (35, 10)"
     );
+    // Spec §3 Decision 0.2: the course was planned at once, and failed.
+    assert_eq!(c.plan_count(), 1);
     // A deviation replans on the held path: the same failure, no route to a target.
     deviation(&c, 0.5);
     c.on_execute(&tick(1)).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 2);
     assert_eq!(c.invent_gui_failure.write_count(), 2);
+    // Spec §3 Decision 0.2: while the goal is held, it tries again every second.
+    assert_eq!(c.retry_at_ns(), Some(tick(11).time_ns));
+    for n in 2..=10 {
+        c.on_execute(&tick(n)).unwrap();
+    }
+    assert_eq!(c.plan_count(), 2);
+    c.on_execute(&tick(11)).unwrap();
+    assert_eq!(c.plan_count(), 3);
+    assert_eq!(c.invent_gui_failure.write_count(), 3);
 }
 
 // ----- 000 §5.2.4.4: the current position -----
@@ -407,33 +456,38 @@ fn s5_2_4_3_a_global_path_that_misses_the_goal_cell_is_a_failure() {
 fn s5_2_4_4_current_position_flag_and_arrival() {
     let mut c = ready(&[(20, 15)]);
     assert!(c.flags().current_position);
-    // Within dmin of the obstacle at (20, 15): flag off.
+    // Within dmin of the obstacle at (20, 15): spec §3 Decision 0.2, the flag stays on (a
+    // plan escapes the zone first).
     position(&c, 5.125, 3.625, 0.0); // cell (20, 14)
     c.on_execute(&tick(1)).unwrap();
-    assert!(!c.flags().current_position);
+    assert!(c.flags().current_position);
     assert_eq!(c.current_position(), Some(Pose::new(5.125, 3.625, 0.0)));
-    // Outside the map: off; NaN: off and ignored.
-    position(&c, -1.0, 1.0, 0.0);
+    // On the obstacle itself: off.
+    position(&c, 5.125, 3.875, 0.0); // cell (20, 15)
     c.on_execute(&tick(2)).unwrap();
     assert!(!c.flags().current_position);
-    position(&c, 3.0, 2.6, 0.0);
+    // Outside the map: off; NaN: off and ignored.
+    position(&c, -1.0, 1.0, 0.0);
     c.on_execute(&tick(3)).unwrap();
+    assert!(!c.flags().current_position);
+    position(&c, 3.0, 2.6, 0.0);
+    c.on_execute(&tick(4)).unwrap();
     assert!(c.flags().current_position);
     position(&c, f64::NAN, 2.6, 0.0);
-    c.on_execute(&tick(4)).unwrap();
+    c.on_execute(&tick(5)).unwrap();
     assert!(!c.flags().current_position);
     assert_eq!(c.current_position(), Some(Pose::new(3.0, 2.6, 0.0)));
     // Arrived when the straight distance to the goal is ≤ GridSize (0.25 m).
     let g = centre(GOAL);
     position(&c, g.0 - 0.26, g.1, 0.0);
-    c.on_execute(&tick(5)).unwrap();
+    c.on_execute(&tick(6)).unwrap();
     assert!(!c.flags().arrived);
     position(&c, g.0 - 0.15, g.1 + 0.15, 0.0);
-    c.on_execute(&tick(6)).unwrap();
+    c.on_execute(&tick(7)).unwrap();
     assert!(c.flags().arrived);
     // Latched until the next SetPosition.
     position(&c, 3.0, 2.6, 0.0);
-    c.on_execute(&tick(7)).unwrap();
+    c.on_execute(&tick(8)).unwrap();
     assert!(c.flags().arrived);
     set_position(&mut c, 1);
     assert!(!c.flags().arrived);
@@ -448,7 +502,7 @@ fn s5_2_4_4_target_area_switches_to_backward_and_turns_the_headings() {
     c.on_execute(&tick(1)).unwrap();
     assert_eq!(c.direction(), Direction::Backward);
     assert_eq!(c.commanded_direction(), Direction::Forward);
-    assert_eq!(c.plan_count(), 1, "the switch replans");
+    assert_eq!(c.plan_count(), 2, "the switch replans");
     let cp = c.drive_cons.last().unwrap();
     assert_eq!(cp.direction, Direction::Backward);
     assert_eq!(cp.points.first(), Some(&(g.0 - 0.4, g.1)));
@@ -462,17 +516,17 @@ fn s5_2_4_4_target_area_switches_to_backward_and_turns_the_headings() {
     position(&c, g.0 - 0.4, g.1, FRAC_PI_2);
     c.on_execute(&tick(2)).unwrap();
     assert_eq!(c.direction(), Direction::Forward);
-    assert_eq!(c.plan_count(), 2);
+    assert_eq!(c.plan_count(), 3);
     assert_eq!(c.drive_cons.last().unwrap().direction, Direction::Forward);
     // Facing the goal: forward, no change, no replan.
     position(&c, g.0 - 0.4, g.1, 0.2);
     c.on_execute(&tick(3)).unwrap();
-    assert_eq!(c.plan_count(), 2);
+    assert_eq!(c.plan_count(), 3);
     // Outside TargetArea the commanded direction holds whatever the heading.
     position(&c, g.0 - 2.0, g.1, PI);
     c.on_execute(&tick(4)).unwrap();
     assert_eq!(c.direction(), Direction::Forward);
-    assert_eq!(c.plan_count(), 2);
+    assert_eq!(c.plan_count(), 3);
 }
 
 // ----- 000 §5.2.4.5: deviation -----
@@ -481,28 +535,35 @@ fn s5_2_4_4_target_area_switches_to_backward_and_turns_the_headings() {
 fn s5_2_4_5_deviation_above_deviatinglen_replans_exactly_once() {
     let mut c = ready(&[]);
     assert!(!c.flags().replan_request);
-    // Not above 0.1 m: nothing.
+    // Not above 0.1 m: nothing (beyond the course's plan, spec §3 Decision 0.2).
     deviation(&c, 0.1);
     c.on_execute(&tick(1)).unwrap();
-    assert_eq!(c.plan_count(), 0);
+    assert_eq!(c.plan_count(), 1);
     assert_eq!(c.deviation(), Some(0.1));
     // Above: one replan, on this tick.
     deviation(&c, 0.15);
     c.on_execute(&tick(2)).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 2);
     assert!(!c.flags().replan_request);
     assert!(c.potential_field().is_some());
     // No new sample: no more replans.
     c.on_execute(&tick(3)).unwrap();
     c.on_execute(&tick(4)).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 2);
     // Several triggers before a tick: still one replan.
     deviation(&c, 0.3);
     c.request_replan();
-    c.map_update(&[0], &[0], &[1], 1, 1, 0).unwrap();
+    c.map_update(&MapUpdate {
+        x: vec![0],
+        y: vec![0],
+        value: vec![1],
+        num: 1,
+        tm: Time { sec: 1, nsec: 0 },
+    })
+    .unwrap();
     assert!(c.flags().replan_request);
     c.on_execute(&tick(5)).unwrap();
-    assert_eq!(c.plan_count(), 2);
+    assert_eq!(c.plan_count(), 3);
     // The plan starts at the current position and ends at the goal.
     let plan = c.local_plan().unwrap();
     assert_eq!(plan.local_path.first(), Some(&START));
@@ -511,20 +572,25 @@ fn s5_2_4_5_deviation_above_deviatinglen_replans_exactly_once() {
 }
 
 #[test]
-fn s5_2_4_5_the_first_current_position_and_a_new_global_path_do_not_replan() {
+fn s5_2_4_5_the_first_current_position_does_not_replan_and_a_new_course_plans_once() {
     let mut c = ready(&[]);
     position(&c, 1.2, 2.6, 0.1);
     c.on_execute(&tick(1)).unwrap();
-    assert_eq!(c.plan_count(), 0);
-    // A new global path drops a pending request and is sent as it is.
+    assert_eq!(c.plan_count(), 1);
+    // Spec §3 Decision 0.2: a new course is planned with the potential field at once; a
+    // request pending before it is served by the same plan.
     assert!(c.request_replan());
     let mut path = straight_path();
     path[3].1 = 11;
     send_path(&mut c, &path);
-    assert!(!c.flags().replan_request);
+    assert!(c.flags().replan_request);
+    assert_eq!(c.held_path(), &path[..]);
     c.on_execute(&tick(2)).unwrap();
-    assert_eq!(c.plan_count(), 0);
-    assert_eq!(c.invent_gui_cons.last().unwrap().cells, path);
+    assert_eq!(c.plan_count(), 2);
+    let plan = c.local_plan().unwrap();
+    assert_eq!(c.invent_gui_cons.last().unwrap().cells, plan.merged_path);
+    c.on_execute(&tick(3)).unwrap();
+    assert_eq!(c.plan_count(), 2);
 }
 
 // ----- 000 §5.2.4.6: map updates -----
@@ -537,10 +603,17 @@ fn s5_2_4_6_a_map_update_that_blocks_the_path_replans_around_it() {
         .iter()
         .copied()
         .unzip();
-    c.map_update(&xs, &ys, &[1; 6], 6, 12, 0).unwrap();
+    c.map_update(&MapUpdate {
+        x: xs.to_vec(),
+        y: ys.to_vec(),
+        value: vec![1; 6],
+        num: 6,
+        tm: Time { sec: 12, nsec: 0 },
+    })
+    .unwrap();
     assert!(c.flags().replan_request);
     c.on_execute(&tick(1)).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 2);
     let sent = c.invent_gui_cons.last().unwrap().cells.clone();
     assert_eq!(sent.first(), Some(&START));
     assert_eq!(sent.last(), Some(&GOAL));
@@ -571,12 +644,19 @@ fn s5_2_4_6_after_arrival_a_map_update_replans_nothing() {
     position(&c, g.0 - 0.1, g.1, 0.0);
     c.on_execute(&tick(1)).unwrap();
     assert!(c.flags().arrived);
-    c.map_update(&[20], &[10], &[1], 1, 3, 0).unwrap();
+    c.map_update(&MapUpdate {
+        x: vec![20],
+        y: vec![10],
+        value: vec![1],
+        num: 1,
+        tm: Time { sec: 3, nsec: 0 },
+    })
+    .unwrap();
     assert!(!c.flags().replan_request);
     deviation(&c, 1.0);
     assert!(!c.request_replan());
     c.on_execute(&tick(2)).unwrap();
-    assert_eq!(c.plan_count(), 0);
+    assert_eq!(c.plan_count(), 1, "only the course's plan");
     assert_eq!(c.drive_cons.write_count(), 1);
 }
 
@@ -607,14 +687,14 @@ fn s5_2_4_7_clear_drops_everything() {
     // Triggers do nothing now; SetPosition needs a new map.
     deviation(&c, 0.5);
     c.on_execute(&tick(4)).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 2, "the course's plan and the deviation's");
     assert!(matches!(
         c.set_position(1.0, 1.0, 0.0, 2.0, 2.0, 0.0, 1),
         Err(Error::LocalPath(LocalPathError::NoMap { .. }))
     ));
 }
 
-// ----- SafeMode (SPEC §3 Decision) -----
+// ----- SafeMode (spec §3 Decision) -----
 
 #[test]
 fn s3_2_2_1_safe_mode_halts_until_the_next_set_position() {
@@ -630,13 +710,14 @@ fn s3_2_2_1_safe_mode_halts_until_the_next_set_position() {
     assert!(!c.request_replan());
     send_path(&mut c, &straight_path());
     c.on_execute(&tick(2)).unwrap();
-    assert_eq!(c.plan_count(), 0);
+    assert_eq!(c.plan_count(), 1, "only the course's plan before SafeMode");
     assert_eq!(c.drive_cons.write_count(), 2);
-    // SetPosition ends it; the held path is sent when it comes again.
+    // SetPosition ends it; the course is planned when it comes again (spec §3 Decision 0.2).
     set_position(&mut c, 1);
     assert!(!c.flags().safe_mode);
     send_path(&mut c, &straight_path());
     c.on_execute(&tick(3)).unwrap();
+    assert_eq!(c.plan_count(), 2);
     assert_eq!(c.drive_cons.write_count(), 3);
     assert_eq!(c.drive_cons.last().unwrap().points.len(), 2);
 }
@@ -652,12 +733,12 @@ fn s5_2_4_13_an_unchanged_plan_is_not_sent_twice() {
     position(&c, 1.125, 2.625, 0.5);
     deviation(&c, 0.2);
     c.on_execute(&tick(1)).unwrap();
-    assert_eq!((c.plan_count(), c.drive_cons.write_count()), (1, 2));
+    assert_eq!((c.plan_count(), c.drive_cons.write_count()), (2, 2));
     let first = c.drive_cons.last().unwrap().clone();
     // The same situation again: the same plan, not sent again.
     deviation(&c, 0.2);
     c.on_execute(&tick(2)).unwrap();
-    assert_eq!(c.plan_count(), 2);
+    assert_eq!(c.plan_count(), 3);
     assert_eq!(c.drive_cons.write_count(), 2);
     assert_eq!(c.invent_gui_cons.write_count(), 2);
     assert_eq!(c.control_points().unwrap().points, first.points);
@@ -665,7 +746,7 @@ fn s5_2_4_13_an_unchanged_plan_is_not_sent_twice() {
     position(&c, 1.125, 2.625, -0.8);
     deviation(&c, 0.2);
     c.on_execute(&tick(3)).unwrap();
-    assert_eq!(c.plan_count(), 3);
+    assert_eq!(c.plan_count(), 4);
     assert_eq!(c.drive_cons.write_count(), 3);
 }
 
@@ -683,10 +764,16 @@ fn s5_2_4_13_a_walled_off_goal_gives_an_empty_path_and_a_notice() {
         }
     }
     let n = xs.len();
-    c.map_update(&xs, &ys, &vec![1; n], n as i32, 20, 0)
-        .unwrap();
+    c.map_update(&MapUpdate {
+        x: xs.to_vec(),
+        y: ys.to_vec(),
+        value: vec![1; n].to_vec(),
+        num: n as i32,
+        tm: Time { sec: 20, nsec: 0 },
+    })
+    .unwrap();
     c.on_execute(&tick(1)).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 2);
     assert!(c.drive_cons.last().unwrap().points.is_empty());
     assert!(c.invent_gui_cons.last().unwrap().cells.is_empty());
     assert!(c.bump_cons.last().unwrap().cells.is_empty());
@@ -711,32 +798,50 @@ fn s5_2_4_13_a_walled_off_goal_gives_an_empty_path_and_a_notice() {
     // Opening 5 cells of the ring (a 1-cell corridor with dmin = 2 cells) lets the next
     // replan through.
     let x = GOAL.0 as i32 - 3;
-    c.map_update(&[x; 5], &[8, 9, 10, 11, 12], &[0; 5], 5, 21, 0)
-        .unwrap();
+    c.map_update(&MapUpdate {
+        x: vec![x; 5],
+        y: vec![8, 9, 10, 11, 12],
+        value: vec![0; 5],
+        num: 5,
+        tm: Time { sec: 21, nsec: 0 },
+    })
+    .unwrap();
     c.on_execute(&tick(3)).unwrap();
     assert_eq!(c.drive_cons.write_count(), 3);
     assert_eq!(c.invent_gui_cons.last().unwrap().cells.last(), Some(&GOAL));
 }
 
 #[test]
-fn s5_2_4_13_a_current_position_within_dmin_fails_with_the_reason() {
+fn s5_2_4_13_a_current_position_within_dmin_escapes_the_zone_and_one_on_an_obstacle_fails() {
     let mut c = ready(&[(10, 12)]);
+    // Spec §3 Decision 0.2 "escape from the margin": next to the obstacle the position flag
+    // stays on, and the plan first steps out of the dmin zone.
     position(&c, 2.625, 2.875, 0.0); // cell (10, 11), next to the obstacle
     deviation(&c, 0.5);
     c.on_execute(&tick(1)).unwrap();
+    assert!(c.flags().current_position);
+    assert_eq!(c.plan_count(), 2);
+    let escaped = c.escaped_steps();
+    assert!(escaped > 0);
+    let path = c.invent_gui_cons.last().unwrap().cells.clone();
+    assert_eq!(path.first(), Some(&(10, 11)));
+    assert_eq!(path.last(), Some(&GOAL));
+    assert_clear_path(&c, &path[escaped..]);
+    // On the obstacle cell itself: no plan, and the reason.
+    position(&c, 2.625, 3.125, 0.0); // cell (10, 12)
+    deviation(&c, 0.5);
+    c.on_execute(&tick(2)).unwrap();
     assert!(!c.flags().current_position);
-    assert_eq!(c.plan_count(), 1);
+    assert_eq!(c.plan_count(), 3);
     assert!(c.drive_cons.last().unwrap().points.is_empty());
+    let reason = &c.last_failure().unwrap().reason;
     assert!(
-        c.last_failure()
-            .unwrap()
-            .reason
-            .starts_with("current position (2.625, 2.875) in cell (10, 11) is too close")
+        reason.starts_with("current position (2.625, 3.125) in cell (10, 12)"),
+        "{reason}"
     );
-    assert!(c.potential_field().is_none());
 }
 
-// ----- in an execution context (SPEC §1) -----
+// ----- in an execution context (spec §1) -----
 
 #[test]
 fn s5_2_4_runs_in_an_execution_context() {
@@ -756,7 +861,8 @@ fn s5_2_4_runs_in_an_execution_context() {
     deviation(c, 0.2);
     ec.run_ticks(1);
     let c = ec.component::<LocalPathPlanning>(id).unwrap();
-    assert_eq!(c.plan_count(), 1);
+    // The activation's plan (spec §3 Decision 0.2) and the deviation's.
+    assert_eq!(c.plan_count(), 2);
     let f = c.potential_field().unwrap();
     assert!(f.is_complete());
     assert_eq!((f.width(), f.height()), (W, H));

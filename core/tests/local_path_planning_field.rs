@@ -1,4 +1,4 @@
-//! The algorithms of LocalPathPlanning (seed 000 §5.2.4.8–12, SPEC §3 steps 3–7) on small
+//! The algorithms of LocalPathPlanning (seed 000 §5.2.4.8–12, spec §3 steps 3–7) on small
 //! hand-made maps, with exact expectations. Test names carry the seed section they check.
 
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
@@ -10,7 +10,7 @@ use rtnav::local::{
     PotentialField, TARGET_POTENTIAL, control_points, corner_cells, descend, find_local_target,
     merge_paths, nearest_path_index, step_length, thin_collinear,
 };
-use rtnav::map::{Cell, GridMap};
+use rtnav::map::{Cell, GridMap, MapUpdate};
 
 /// A map from rows drawn top (largest y) first: `#` obstacle, anything else free.
 fn ascii(rows: &[&str], g: f64) -> GridMap {
@@ -200,7 +200,7 @@ fn s5_2_4_9_every_reached_cell_is_above_its_parent_by_its_three_parts() {
 
 #[test]
 fn s5_2_4_9_posture_part_follows_the_formula() {
-    // SPEC §3 step 4: P = (G_Angle·SL/GL + S_Angle·(GL/SL)·L)·PCL/100, computed here from
+    // spec §3 step 4: P = (G_Angle·SL/GL + S_Angle·(GL/SL)·L)·PCL/100, computed here from
     // angle differences instead of the implementation's atan2(|v×h|, v·h).
     let map = open_map(30, 30, 0.1);
     let (current, target) = ((5, 10), (22, 18));
@@ -703,8 +703,14 @@ fn s5_2_4_8_a_blocked_target_moves_on_along_the_path() {
     let path = l_path();
     let goal = Pose::new(6.25, 3.25, 1.0);
     // Block (8, 2), the target by distance.
-    map.map_update(&[8], &[2], &[1], 1, Default::default())
-        .unwrap();
+    map.map_update(&MapUpdate {
+        x: vec![8],
+        y: vec![2],
+        value: vec![1],
+        num: 1,
+        tm: Default::default(),
+    })
+    .unwrap();
     let t = find_local_target(
         &map,
         &path,
@@ -731,8 +737,14 @@ fn s5_2_4_8_a_blocked_target_moves_on_along_the_path() {
     .unwrap();
     assert_eq!((t.index, t.cell), (8, (10, 2)));
     // Block the goal: nothing left.
-    map.map_update(&[12], &[6], &[1], 1, Default::default())
-        .unwrap();
+    map.map_update(&MapUpdate {
+        x: vec![12],
+        y: vec![6],
+        value: vec![1],
+        num: 1,
+        tm: Default::default(),
+    })
+    .unwrap();
     assert_eq!(
         find_local_target(
             &map,
@@ -848,7 +860,7 @@ fn s5_2_4_12_collinear_points_thinned_only_where_truly_collinear() {
     );
 }
 
-// ----- SPEC §3 steps 3–7 together -----
+// ----- spec §3 steps 3–7 together -----
 
 #[test]
 fn s5_2_4_planner_replans_around_an_obstacle_on_the_held_path() {

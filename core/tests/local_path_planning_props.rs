@@ -1,4 +1,4 @@
-//! Property test of the potential field and descent (000 §5.2.4.9–10, SPEC §3 steps 4–5)
+//! Property test of the potential field and descent (000 §5.2.4.9–10, spec §3 steps 4–5)
 //! on random maps: whenever a path exists in the `dmin`-inflated grid (8-connected, no
 //! corner cutting) between two cells, the planner finds one, and it is valid; when none
 //! exists, it reports no route.

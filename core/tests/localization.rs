@@ -1,4 +1,4 @@
-//! Localization (SPEC §5): the pose from the simulated pose or from wheel odometry (exact
+//! Localization (spec §5): the pose from the simulated pose or from wheel odometry (exact
 //! arcs), the start pose, bad input.
 
 use core::f64::consts::PI;

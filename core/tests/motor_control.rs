@@ -1,4 +1,4 @@
-//! MotorControl (seed 002, SPEC §4): kinematics, target angles, PD torque, services,
+//! MotorControl (seed 002, spec §4): kinematics, target angles, PD torque, services,
 //! parameters and their reflection timing, the simulated-pose conversion, and the safe stop.
 //!
 //! The component is driven through its callbacks with exact simulated time (`Tick`), or in
@@ -488,7 +488,7 @@ fn simulated_pose_conversion_reproduces_the_rh0_example_in_all_four_quadrants() 
     assert_eq!(b.m.last_error(), None);
 }
 
-// ------------------------------------------------------------ safe stop (SPEC §4 Decision)
+// ------------------------------------------------------------ safe stop (spec §4 Decision)
 
 /// A bench running at 3 rad/s target with valid input up to `ms` = 10.
 fn running() -> Bench {
@@ -540,7 +540,7 @@ fn non_finite_velocities_give_zero_torque_and_a_reason() {
         assert!(b.exec(13)[0] > 0.0, "resumes");
         assert_eq!(b.m.status(), &MotorStatus::Running);
     }
-    // vy is ignored (SPEC §4), even when it is not finite.
+    // vy is ignored (spec §4), even when it is not finite.
     let mut b = running();
     b.vel.write(TimedVelocity {
         tm: Time::from_nanos(11 * MS),

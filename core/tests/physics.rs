@@ -1,10 +1,10 @@
-//! The physics (SPEC §5) alone and in closed loop with MotorControl (SPEC §4) at 1 kHz with
+//! The physics (spec §5) alone and in closed loop with MotorControl (spec §4) at 1 kHz with
 //! the seed's default gains (P 5, D 2).
 
 use rtnav::components::{MotorControl, MotorStatus, PhysicsSim};
 use rtnav::errors::MotionError;
 use rtnav::interfaces::Pose;
-use rtnav::map::GridMap;
+use rtnav::map::{GridMap, MapUpdate};
 use rtnav::motion::{BumpReport, DiffDrive, ModelFrame, Physics, PhysicsParams, STEP_NS, arc_step};
 use rtnav::rtc::{
     ComponentId, ConfigAccess, ExecutionContext, InPort, LifecycleState, OutPort, Time,
@@ -218,14 +218,26 @@ fn an_obstacle_that_appears_on_the_body_is_a_bump_and_the_edge_of_the_map_too() 
     ph.set_pose(Pose::new(2.0, 1.5, 0.0)).unwrap();
     assert_eq!(ph.step([0.0, 0.0]).unwrap(), None);
     // MapUpdate puts an obstacle 0.3 m ahead of the centre.
-    ph.map_update(&[46], &[30], &[1], 1, Time::from_nanos(5))
-        .unwrap();
+    ph.map_update(&MapUpdate {
+        x: vec![46],
+        y: vec![30],
+        value: vec![1],
+        num: 1,
+        tm: Time::from_nanos(5),
+    })
+    .unwrap();
     let r = ph.step([0.0, 0.0]).unwrap().expect("bump after map update");
     assert_eq!(r.cell, (46, 30));
     // A bad map update is refused, atomically.
     assert!(
-        ph.map_update(&[1, 2], &[1], &[1], 2, Time::default())
-            .is_err()
+        ph.map_update(&MapUpdate {
+            x: vec![1, 2],
+            y: vec![1],
+            value: vec![1],
+            num: 2,
+            tm: Time::default()
+        })
+        .is_err()
     );
     // Leaving the map: outside counts as obstacle.
     let mut ph = Physics::new(PhysicsParams::default()).unwrap();

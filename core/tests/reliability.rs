@@ -1,4 +1,4 @@
-//! Issue 18's reproductions, kept as regression tests (SPEC §2 and §4 Decisions 0.2):
+//! Issue 18's reproductions, kept as regression tests (spec §2 and §4 Decisions 0.2):
 //!
 //! 1. the rtnav JSON map reader allocated `rows × width` before it checked the size: the exact
 //!    inputs of the report are refused with `MapError::TooLarge`, allocating almost nothing
@@ -8,8 +8,8 @@
 //! 3. timestamps are checked the same way where a sample enters every component
 //!    ([`Time::checked`]), and time differences never underflow ([`Time::nanos_since`]).
 //!
-//! (Reproduction 4, the dmin boundary, needs the lead's LocalPathPlanning change: it is in
-//! `pending_lead.rs`.)
+//! Reproduction 4 (the dmin boundary), the planners' and MapMaintenance's `MapUpdate`
+//! timestamps and the share-token deflate bomb are in `margin_and_map_updates.rs`.
 
 // A test binary may have its own allocator: this one counts, per thread, what the code under
 // test asks for. Its `unsafe` is the `GlobalAlloc` contract, passed straight to `System`.
@@ -23,7 +23,7 @@ use rtnav::components::{DriveControl, Localization, MotorControl, MotorStatus, P
 use rtnav::errors::{MapError, MotionError};
 use rtnav::interfaces::ControlPoints;
 use rtnav::map::formats::{json, movingai, ros};
-use rtnav::map::{GridMap, MAX_CELLS};
+use rtnav::map::{GridMap, MAX_CELLS, MapUpdate};
 use rtnav::motion::PhysicsParams;
 use rtnav::rtc::{
     Component, InPort, OutPort, Tick, Time, TimedDoubleSeq, TimedPosition, TimedVelocity,
@@ -374,8 +374,16 @@ fn localization_drive_control_and_physics_refuse_the_same_timestamps() {
     );
     p.set_map(Some(GridMap::from_map_data(&[0; 4], 2, 2, 1.0).unwrap()));
     let before = format!("{:?}", p.physics());
-    let e = p.map_update(&[0], &[0], &[1], 1, BAD).unwrap_err();
-    assert_eq!(e, rtnav::Error::Timestamp(bad("MapUpdate")));
+    let e = p
+        .map_update(&MapUpdate::from_cells(&[(0, 0, 1)], BAD))
+        .unwrap_err();
+    assert_eq!(
+        e,
+        rtnav::Error::Map(MapError::BadTimestamp {
+            what: "MapUpdate",
+            nsec: BAD.nsec
+        })
+    );
     assert_eq!(format!("{:?}", p.physics()), before, "nothing changed");
 }
 
@@ -493,4 +501,264 @@ fn drive_control_survives_control_points_at_the_edge_of_f64() {
             }
         }
     }
+}
+
+// ------------------------------------------------------------------ 4. the dmin boundary
+
+mod margin {
+    //! Reproduction 4 (spec §3 Decision 0.2, escape from the margin): a robot whose cell is
+    //! within `dmin` only by rounding (obstacle distance `0.6000000000000001`, `dmin = 0.6`),
+    //! or a hair inside it, refused every local plan, goal and global plan for good. Now the
+    //! local plan steps out of the zone first and the robot reaches its goal.
+
+    use rtnav::interfaces::{Direction, Pose};
+    use rtnav::map::GridMap;
+    use rtnav::system::{ComponentKind, EventKind, Input, Rates, System};
+
+    /// 20 m × 10 m of open floor at 0.1 m (outside the map counts as obstacle).
+    fn open_floor() -> GridMap {
+        GridMap::from_map_data(&[0; 200 * 100], 200, 100, 0.1).unwrap()
+    }
+
+    fn apply(s: &mut System, input: Input) {
+        s.apply(&input).unwrap_or_else(|e| panic!("{input:?}: {e}"));
+    }
+
+    /// What a drive from the margin did.
+    struct Drive {
+        /// The robot cell's obstacle distance once the obstacle is there \[m\].
+        distance: f64,
+        /// Escape steps of the local plans sent (0: none started in the zone).
+        escaped: usize,
+        arrived: bool,
+        bumps: u64,
+    }
+
+    /// The robot at the centre of cell (50, 50), the goal 10 m east, `dmin` 0.6 m (one value
+    /// for both planners); then a `MapUpdate` puts an obstacle at `obstacle`, so that the
+    /// robot's own cell is within `dmin`; then the drive, at most 120 s of simulated time.
+    fn drive_from_the_margin(obstacle: (i64, i64)) -> Drive {
+        let mut s = System::new(Rates::default()).unwrap();
+        apply(
+            &mut s,
+            Input::SetParam {
+                component: ComponentKind::LocalPathPlanning,
+                name: "dmin".to_owned(),
+                value: 0.6,
+            },
+        );
+        s.load_map(open_floor());
+        apply(
+            &mut s,
+            Input::SetPosition {
+                start: Pose::new(5.05, 5.05, 0.0),
+                goal: Pose::new(15.05, 5.05, 0.0),
+                direction: Direction::Forward,
+            },
+        );
+        apply(
+            &mut s,
+            Input::MapUpdate {
+                cells: vec![(obstacle.0, obstacle.1, 1)],
+            },
+        );
+        let distance = s.map().unwrap().obstacle_distance((50, 50));
+        let seen = s.record().event_count();
+        apply(&mut s, Input::ActivateAll);
+        let arrived = s.run_until(120.0, |s| s.mission().is_arrived()).unwrap();
+        let escaped = s
+            .record()
+            .events_since(seen)
+            .filter_map(|e| match e.kind {
+                EventKind::LocalPlanSent { escaped, .. } => Some(escaped),
+                _ => None,
+            })
+            .max()
+            .unwrap_or(0);
+        Drive {
+            distance,
+            escaped,
+            arrived,
+            bumps: s.stats().bumps,
+        }
+    }
+
+    #[test]
+    fn a_robot_within_dmin_by_rounding_only_still_reaches_its_goal() {
+        // Six cells below: 6 × 0.1 = 0.6000000000000001 ≤ dmin = 0.6 (with DMIN_TOLERANCE),
+        // the report's value.
+        let d = drive_from_the_margin((50, 44));
+        assert_eq!(
+            d.distance, 0.6000000000000001,
+            "the report's boundary value"
+        );
+        assert!(rtnav::map::within_dmin(d.distance, 0.6));
+        assert!(d.escaped > 0, "the first local plan steps out of the zone");
+        assert!(d.arrived, "stuck at the dmin boundary");
+        assert_eq!(d.bumps, 0);
+    }
+
+    #[test]
+    fn a_robot_a_hair_inside_dmin_still_reaches_its_goal() {
+        // (47, 45): √(3² + 5²) × 0.1 ≈ 0.583 m < dmin; the cell's edge is 0.515 m away, more
+        // than radiusOfBodyArea 0.45 m, so nothing touches.
+        let d = drive_from_the_margin((47, 45));
+        assert!(d.distance < 0.6 && d.distance > 0.58, "{}", d.distance);
+        assert!(d.escaped > 0, "the first local plan steps out of the zone");
+        assert!(d.arrived, "stuck inside the dmin margin");
+        assert_eq!(d.bumps, 0);
+    }
+
+    /// The control: the same drive with the obstacle 1 m away arrives without escaping, so
+    /// the two tests above test the margin and nothing else.
+    #[test]
+    fn control_the_same_drive_with_the_obstacle_clear_of_dmin_arrives() {
+        let d = drive_from_the_margin((50, 40));
+        assert!(d.distance > 0.99, "{}", d.distance);
+        assert_eq!(d.escaped, 0);
+        assert!(d.arrived);
+        assert_eq!(d.bumps, 0);
+    }
+}
+
+// ------------------------------------------------------------------ 3. every MapUpdate
+
+/// Reproduction 3 for the map updates: GlobalPathPlanning kept `nsec ≥ 10⁹` as its map
+/// version while LocalPathPlanning refused it. Every component that takes a `MapUpdate`
+/// (MapMaintenance, both planners, the physics, DriveControl's clearance map) refuses it the
+/// same way ([`MapUpdate::check`], which calls [`Time::checked`]) and changes nothing; the
+/// planners also ignore a current position stamped so.
+#[test]
+fn every_map_update_refuses_nsec_of_a_second_or_more_the_same_way() {
+    use rtnav::components::{GlobalPathPlanning, LocalPathPlanning, MapMaintenance};
+    let map = GridMap::from_map_data(&[0; 16], 4, 4, 1.0).unwrap();
+    let update = MapUpdate::from_cells(&[(1, 1, 1)], BAD);
+    let refusal = rtnav::Error::Map(MapError::BadTimestamp {
+        what: "MapUpdate",
+        nsec: BAD.nsec,
+    });
+
+    let mut g = GlobalPathPlanning::new("GlobalPathPlanning0");
+    g.set_map(map.clone());
+    assert_eq!(
+        g.map_update(&update),
+        Err(refusal.clone()),
+        "GlobalPathPlanning"
+    );
+    assert_eq!(
+        g.map(),
+        Some(&map),
+        "GlobalPathPlanning: map and version unchanged"
+    );
+
+    let mut l = LocalPathPlanning::new("LocalPathPlanning0");
+    l.set_grid_map(map.clone());
+    assert_eq!(
+        l.map_update(&update),
+        Err(refusal.clone()),
+        "LocalPathPlanning"
+    );
+    assert_eq!(l.map(), Some(&map), "LocalPathPlanning: map unchanged");
+
+    let mut m = MapMaintenance::new("MapMaintenance0");
+    m.set_map(map.clone());
+    assert_eq!(
+        m.map_update(update.clone()),
+        Err(refusal.clone()),
+        "MapMaintenance"
+    );
+    assert_eq!(m.map(), Some(&map), "MapMaintenance: map unchanged");
+
+    let mut d = DriveControl::default();
+    d.set_map(map.clone());
+    let before = format!("{d:?}");
+    assert_eq!(d.map_update(&update), Err(refusal), "DriveControl");
+    assert_eq!(format!("{d:?}"), before, "DriveControl: nothing changed");
+}
+
+/// GlobalPathPlanning's `InCurrentPosition`: a sample stamped `nsec ≥ 10⁹` is not a current
+/// position (like a pose that is not finite), so a replan does not start from it.
+#[test]
+fn global_path_planning_ignores_a_current_position_with_a_bad_timestamp() {
+    use rtnav::components::GlobalPathPlanning;
+    use rtnav::interfaces::Pose;
+    let map = GridMap::from_map_data(&[0; 400], 20, 20, 0.5).unwrap();
+    let (a, b) = ((4, 4), (4, 14));
+    for (tm, from) in [(BAD, a), (Time::from_nanos(150 * MS), b)] {
+        let mut g = GlobalPathPlanning::new("GlobalPathPlanning0");
+        g.set_map(map.clone());
+        g.configuration().unwrap().apply_on_activation();
+        g.on_activated(&tick(0)).unwrap();
+        g.set_position(Pose::new(2.25, 2.25, 0.0), Pose::new(7.25, 7.25, 0.0))
+            .unwrap();
+        g.on_execute(&tick(100)).unwrap();
+        assert_eq!(g.last_plan().unwrap().cells[0], a);
+        // The robot reports itself at (2.25, 7.25); then an obstacle on the route asks for a
+        // new one from the current position.
+        g.in_current_position.put(TimedPosition {
+            tm,
+            x: 2.25,
+            y: 7.25,
+            theta: 0.0,
+            ..TimedPosition::default()
+        });
+        g.on_execute(&tick(200)).unwrap();
+        g.map_update(&MapUpdate::from_cells(&[(9, 9, 1)], Time::default()))
+            .unwrap();
+        g.on_execute(&tick(300)).unwrap();
+        assert_eq!(g.last_plan().unwrap().cells[0], from, "{tm:?}");
+    }
+}
+
+/// LocalPathPlanning's `InCurrentPosition` and `InDeviating`: a sample stamped
+/// `nsec ≥ 10⁹` is ignored (no current position, no deviation), a valid one is taken.
+#[test]
+fn local_path_planning_ignores_port_samples_with_a_bad_timestamp() {
+    use rtnav::components::LocalPathPlanning;
+    use rtnav::rtc::TimedDouble;
+    for (tm, taken) in [(BAD, false), (Time::from_nanos(50 * MS), true)] {
+        let mut l = LocalPathPlanning::new("LocalPathPlanning0");
+        l.set_grid_map(GridMap::from_map_data(&[0; 400], 20, 20, 0.5).unwrap());
+        l.configuration().unwrap().apply_on_activation();
+        l.on_activated(&tick(0)).unwrap();
+        l.in_current_position.put(TimedPosition {
+            tm,
+            x: 2.25,
+            y: 2.25,
+            theta: 0.0,
+            ..TimedPosition::default()
+        });
+        l.in_deviating.put(TimedDouble { tm, data: 0.01 });
+        l.on_execute(&tick(100)).unwrap();
+        assert_eq!(l.current_position().is_some(), taken, "{tm:?}");
+        assert_eq!(l.deviation().is_some(), taken, "{tm:?}");
+    }
+}
+
+// ------------------------------------------------------------------ share tokens
+
+/// Found by `rtnav fuzz` (target `share-token`): a 22 KB token that inflates past the 16 MiB
+/// limit was refused with `format!("{e:?}")` of miniz_oxide's `DecompressError`, which holds
+/// the whole partial output — a 67 MB message, 76 MiB asked at once, about a second. Now the
+/// message names the limit, and the refusal costs the inflated bytes and little more.
+#[test]
+fn a_share_token_that_inflates_past_the_limit_is_refused_with_a_short_message() {
+    use base64::Engine as _;
+    use rtnav::system::{Session, TOKEN_INFLATE_LIMIT};
+    let mut json = String::from("{\"v\":1,\"scenario\":\"open_field\"");
+    json.push_str(&" ".repeat(TOKEN_INFLATE_LIMIT + 1));
+    json.push('}');
+    let token = base64::engine::general_purpose::URL_SAFE_NO_PAD
+        .encode(miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 6));
+    drop(json);
+    assert!(token.len() < 32_000, "a small token: {} bytes", token.len());
+    let (r, largest, peak) = measured(|| Session::decode_token(&token));
+    let e = r.unwrap_err().to_string();
+    assert!(e.len() < 200, "a {} byte message: {}…", e.len(), &e[..200]);
+    assert!(e.contains("inflates to more than 16777216 bytes"), "{e}");
+    let limit = TOKEN_INFLATE_LIMIT as i64;
+    assert!(
+        largest as i64 <= 2 * limit && peak <= 2 * limit,
+        "asked {largest} B at once, {peak} B at the peak"
+    );
 }

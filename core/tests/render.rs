@@ -1,4 +1,4 @@
-//! The renderer (SPEC §5 InventGUI): golden PNGs compared exactly, the view transform, the
+//! The renderer (spec §5 InventGUI): golden PNGs compared exactly, the view transform, the
 //! caches, and refused input.
 //!
 //! Goldens live in `fixtures/golden/render/`. `UPDATE_GOLDEN=1 cargo test --test render`

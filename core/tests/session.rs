@@ -5,9 +5,11 @@
 use std::path::Path;
 
 use rtnav::interfaces::{Direction, Pose};
-use rtnav::render::Renderer;
+use rtnav::render::{Layers, Renderer, caption};
 use rtnav::rtc::LifecycleState;
-use rtnav::system::{ComponentKind, EventKind, MapSource, MemoryResolver, Scenario, Session};
+use rtnav::system::{
+    ComponentInfo, ComponentKind, EventKind, Input, MapSource, MemoryResolver, Scenario, Session,
+};
 
 fn root() -> &'static Path {
     Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
@@ -31,14 +33,19 @@ fn loaded(name: &str) -> Session {
     session
 }
 
-fn frame(session: &mut Session) -> Vec<u8> {
-    let mut renderer = Renderer::new(640, 400).unwrap();
-    let scene = session.scene().unwrap();
-    renderer.render(&scene).unwrap();
-    renderer.frame().data().to_vec()
+/// What the page draws: every layer, the page's caption.
+fn frame(session: &Session) -> Vec<u8> {
+    let system = session.system();
+    Renderer::new(640, 400)
+        .unwrap()
+        .render_system(system, &caption(system), Layers::ALL)
+        .unwrap()
+        .data()
+        .to_vec()
 }
 
-fn value(session: &mut Session, component: &str, name: &str) -> (f64, f64, bool) {
+/// A parameter's (requested, effective, pending) as the parameter panel shows it.
+fn value(session: &Session, component: &str, name: &str) -> (f64, f64, bool) {
     let view = session.parameters_view();
     let p = view
         .iter()
@@ -56,18 +63,26 @@ fn a_share_token_reproduces_the_set_up_and_the_first_frame() {
     let mut a = loaded("open_field");
     // Time passes, cells are painted, parameters change, the goal moves.
     a.advance(100.0);
-    let painted = [(12, 6, 1), (12, 7, 1), (13, 6, 1)];
-    assert_eq!(a.set_cells(&painted).unwrap(), 3);
-    a.set_param(
+    let painted = vec![(12, 6, 1), (12, 7, 1), (13, 6, 1)];
+    a.apply(&Input::MapUpdate { cells: painted }).unwrap();
+    assert!(
+        a.new_events()
+            .iter()
+            .any(|e| matches!(e.kind, EventKind::MapUpdated { changed: 3, .. }))
+    );
+    a.set_param_text(
         ComponentKind::LocalPathPlanning,
         "PostureConsiderationLevel",
         "20",
     )
     .unwrap();
-    a.set_param(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
+    a.set_param_text(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
         .unwrap();
-    a.set_goal(Pose::new(22.0, 14.0, 0.5), Direction::Forward)
-        .unwrap();
+    a.apply(&Input::SetGoal {
+        goal: Pose::new(22.0, 14.0, 0.5),
+        direction: Direction::Forward,
+    })
+    .unwrap();
     a.advance(100.0);
     let token = a.share_token().unwrap();
     assert!(
@@ -90,7 +105,7 @@ fn a_share_token_reproduces_the_set_up_and_the_first_frame() {
     assert_eq!(b.setup().unwrap(), setup);
     assert_eq!(b.parameters_view(), a.parameters_view());
     assert_eq!(b.system().time_ns(), a.system().time_ns());
-    assert!(frame(&mut b) == frame(&mut a), "identical first frame");
+    assert!(frame(&b) == frame(&a), "identical first frame");
     assert!(b.system().map().unwrap().is_obstacle(12, 6));
 }
 
@@ -126,29 +141,27 @@ fn a_link_needs_a_scenario() {
 #[test]
 fn posture_consideration_changes_the_next_plan_at_once() {
     let mut s = loaded("parking_wall");
-    s.set_param(
-        ComponentKind::LocalPathPlanning,
-        "PostureConsiderationLevel",
-        "0",
-    )
-    .unwrap();
-    let low = s.system().local_path_planning().merged_path().to_vec();
-    s.set_param(
-        ComponentKind::LocalPathPlanning,
-        "PostureConsiderationLevel",
-        "100",
-    )
-    .unwrap();
-    let high = s.system().local_path_planning().merged_path().to_vec();
+    let mut merged_path_with = |level: &str| {
+        s.set_param_text(
+            ComponentKind::LocalPathPlanning,
+            "PostureConsiderationLevel",
+            level,
+        )
+        .unwrap();
+        let lpp = s.system().wiring().local_path_planning();
+        lpp.merged_path().to_vec()
+    };
+    let low = merged_path_with("0");
+    let high = merged_path_with("100");
     assert_eq!(
-        value(&mut s, "LocalPathPlanning", "PostureConsiderationLevel"),
+        value(&s, "LocalPathPlanning", "PostureConsiderationLevel"),
         (100.0, 100.0, false)
     );
     assert!(!low.is_empty() && !high.is_empty());
     assert_ne!(low, high);
     // Out of range: refused with the reason, the value stays.
     let e = s
-        .set_param(
+        .set_param_text(
             ComponentKind::LocalPathPlanning,
             "PostureConsiderationLevel",
             "101",
@@ -160,7 +173,7 @@ fn posture_consideration_changes_the_next_plan_at_once() {
         "{e}"
     );
     assert_eq!(
-        value(&mut s, "LocalPathPlanning", "PostureConsiderationLevel").0,
+        value(&s, "LocalPathPlanning", "PostureConsiderationLevel").0,
         100.0
     );
 }
@@ -177,59 +190,64 @@ fn an_on_activation_parameter_waits_for_the_next_activation() {
         pending.is_empty(),
         "nothing waits after a load: {pending:?}"
     );
-    s.activate_all();
+    s.apply(&Input::ActivateAll).unwrap();
     s.advance(50.0);
-    s.set_param(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
+    s.set_param_text(ComponentKind::MotorControl, "lengthOfAxle", "0.5")
         .unwrap();
     assert_eq!(
-        value(&mut s, "MotorControl", "lengthOfAxle"),
+        value(&s, "MotorControl", "lengthOfAxle"),
         (0.5, 0.441, true)
     );
-    s.deactivate(ComponentKind::MotorControl).unwrap();
-    s.activate(ComponentKind::MotorControl).unwrap();
-    assert_eq!(
-        value(&mut s, "MotorControl", "lengthOfAxle"),
-        (0.5, 0.5, false)
-    );
+    let component = ComponentKind::MotorControl;
+    s.apply(&Input::Deactivate { component }).unwrap();
+    s.apply(&Input::Activate { component }).unwrap();
+    assert_eq!(value(&s, "MotorControl", "lengthOfAxle"), (0.5, 0.5, false));
 }
 
 #[test]
 fn a_nan_pose_puts_localization_in_error_and_reset_recovers() {
     let mut s = loaded("open_field");
-    s.activate_all();
+    s.apply(&Input::ActivateAll).unwrap();
     s.advance(100.0);
-    s.inject_input(
-        ComponentKind::Localization,
-        "InSimulatedPosition",
-        vec![f64::NAN, 0.0, 0.0, 0.0],
-    )
+    s.apply(&Input::InjectInput {
+        component: ComponentKind::Localization,
+        port: "InSimulatedPosition".to_owned(),
+        data: vec![f64::NAN, 0.0, 0.0, 0.0],
+    })
     .unwrap();
     s.step_ticks(1);
-    let info = s.system().component_info(ComponentKind::Localization);
+    let info = ComponentInfo::of(s.system().wiring(), ComponentKind::Localization);
     assert_eq!(info.state, LifecycleState::Error);
     assert_eq!(
         info.last_error.as_deref(),
         Some("InSimulatedPosition: data[0] = NaN is not finite")
     );
     let unknown = s
-        .inject_input(ComponentKind::MotorControl, "Torque", vec![0.0])
+        .apply(&Input::InjectInput {
+            component: ComponentKind::MotorControl,
+            port: "Torque".to_owned(),
+            data: vec![0.0],
+        })
         .unwrap_err()
         .to_string();
     assert!(
         unknown.starts_with("MotorControl has no input port `Torque`"),
         "{unknown}"
     );
+    let component = ComponentKind::Localization;
+    s.apply(&Input::Reset { component }).unwrap();
     assert_eq!(
-        s.reset(ComponentKind::Localization).unwrap(),
+        s.system().component_state(component),
         LifecycleState::Inactive
     );
+    s.apply(&Input::Activate { component }).unwrap();
     assert_eq!(
-        s.activate(ComponentKind::Localization).unwrap(),
+        s.system().component_state(component),
         LifecycleState::Active
     );
     s.advance(100.0);
     assert_eq!(
-        s.system().component_state(ComponentKind::Localization),
+        s.system().component_state(component),
         LifecycleState::Active
     );
 }
@@ -237,7 +255,7 @@ fn a_nan_pose_puts_localization_in_error_and_reset_recovers() {
 #[test]
 fn the_plot_window_holds_the_last_seconds_and_the_replans() {
     let mut s = loaded("open_field");
-    s.activate_all();
+    s.apply(&Input::ActivateAll).unwrap();
     s.set_speed(16.0).unwrap();
     for _ in 0..50 {
         s.advance(16.0);
@@ -260,7 +278,7 @@ fn the_plot_window_holds_the_last_seconds_and_the_replans() {
             .all(|&t| t >= now - 60.0 - 1e-9 && t <= now)
     );
     let plans = s
-        .drain_events()
+        .new_events()
         .iter()
         .filter(|e| {
             matches!(
@@ -276,22 +294,25 @@ fn the_plot_window_holds_the_last_seconds_and_the_replans() {
 fn an_exported_conf_reimported_gives_the_same_configuration() {
     let mut s = loaded("open_field");
     let original = s.parameters_view();
-    let text = s.system().to_conf();
-    s.set_param(ComponentKind::DriveControl, "MaxVelocity", "0.3")
+    let text = s.system().wiring().to_conf();
+    s.set_param_text(ComponentKind::DriveControl, "MaxVelocity", "0.3")
         .unwrap();
-    s.set_param(ComponentKind::PhysicsSim, "Mass", "35")
+    s.set_param_text(ComponentKind::PhysicsSim, "Mass", "35")
         .unwrap();
     assert_ne!(s.parameters_view(), original);
-    s.load_conf(&text).unwrap();
+    let load = |text: &str| Input::LoadConf {
+        text: text.to_owned(),
+    };
+    s.apply(&load(&text)).unwrap();
     assert_eq!(s.parameters_view(), original);
-    assert_eq!(s.system().to_conf(), text);
+    assert_eq!(s.system().wiring().to_conf(), text);
     // A bad file is refused with its line; nothing changes.
     let bad = text.replace(
         "conf.default.MaxVelocity: 0.5",
         "conf.default.MaxVelocity: 9",
     );
     assert_ne!(bad, text, "the export names MaxVelocity as written");
-    let e = s.load_conf(&bad).unwrap_err().to_string();
+    let e = s.apply(&load(&bad)).unwrap_err().to_string();
     assert!(e.contains("MaxVelocity") && e.contains("line"), "{e}");
     assert_eq!(s.parameters_view(), original);
 }

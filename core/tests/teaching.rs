@@ -1,12 +1,12 @@
-//! The core of the teaching tools (issue 8): PhysicsSim's configuration (SPEC §5 "Physics"),
-//! the whole configuration as one OpenRTM `.conf` bundle (SPEC §1), and the cell inspector
-//! (SPEC §2 obstacle distance, SPEC §3 step 4 potential field).
+//! The core of the teaching tools (issue 8): PhysicsSim's configuration (spec §5 "Physics"),
+//! the whole configuration as one OpenRTM `.conf` bundle (spec §1), and the cell inspector
+//! (spec §2 obstacle distance, spec §3 step 4 potential field).
 
 use std::collections::BTreeSet;
 
 use rtnav::Error;
 use rtnav::components::{PhysicsSim, PhysicsSimParams};
-use rtnav::errors::{ConfigError, MotionError, SystemError};
+use rtnav::errors::{ConfBundleError, ConfigError, MotionError, ScenarioError, SystemError};
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
 use rtnav::motion::{Physics, PhysicsParams};
@@ -14,7 +14,26 @@ use rtnav::rtc::{
     ComponentId, ConfFile, ConfigAccess, ExecutionContext, LifecycleState, OutPort, Time,
     TimedDoubleSeq,
 };
-use rtnav::system::{CONF_BUNDLE_HEADER, ComponentKind, DirResolver, Rates, Scenario, System};
+use rtnav::system::setup::{self, BuildOptions, PLAN_SECONDS, Setup};
+use rtnav::system::{
+    CONF_BUNDLE_HEADER, ComponentKind, DirResolver, Input, Rates, Scenario, System,
+};
+
+/// `SetParam` of `component`'s `name`.
+fn param(component: ComponentKind, name: &str, value: f64) -> Input {
+    Input::SetParam {
+        component,
+        name: name.to_owned(),
+        value,
+    }
+}
+
+/// `LoadConf` of `text`.
+fn load_conf(text: &str) -> Input {
+    Input::LoadConf {
+        text: text.to_owned(),
+    }
+}
 
 // ---------------------------------------------------------------- PhysicsSim's configuration
 
@@ -28,7 +47,7 @@ fn physics_parameter_defaults_are_the_model_the_system_is_built_with() {
     );
     assert_eq!((d.mass, d.max_torque), (20.0, 5.0));
     let s = System::new(Rates::default()).unwrap();
-    let cfg = s.config(ComponentKind::PhysicsSim).unwrap();
+    let cfg = s.wiring().config(ComponentKind::PhysicsSim).unwrap();
     let names: Vec<_> = cfg.specs().iter().map(|s| s.name).collect();
     assert_eq!(
         names,
@@ -39,13 +58,13 @@ fn physics_parameter_defaults_are_the_model_the_system_is_built_with() {
     for spec in cfg.specs() {
         assert_eq!(spec.reflection.to_string(), "always");
         assert!(
-            spec.description.contains("SPEC §5 Physics"),
+            spec.description.contains("spec §5 Physics"),
             "{}",
             spec.name
         );
         assert!(spec.min >= 0.0 && spec.max.is_finite(), "{}", spec.name);
     }
-    let model = s.physics().physics().params();
+    let model = s.wiring().physics().physics().params();
     assert_eq!(cfg.value("Mass").unwrap(), model.mass);
     assert_eq!(cfg.value("YawInertia").unwrap(), model.yaw_inertia);
     assert_eq!(
@@ -152,7 +171,7 @@ fn a_heavier_robot_and_a_weaker_motor_accelerate_less() {
 #[test]
 fn bad_physics_values_are_refused_and_change_nothing() {
     let mut s = System::new(Rates::default()).unwrap();
-    let cfg = s.config_mut(ComponentKind::PhysicsSim).unwrap();
+    let physics = ComponentKind::PhysicsSim;
     for (name, value) in [
         ("Mass", 0.0),
         ("Mass", -1.0),
@@ -163,20 +182,21 @@ fn bad_physics_values_are_refused_and_change_nothing() {
         ("MaxTorque", 0.0),
         ("MaxTorque", f64::INFINITY),
     ] {
-        let e = cfg.set(name, value).unwrap_err();
+        let e = s.apply(&param(physics, name, value)).unwrap_err();
         assert!(
-            matches!(&e, ConfigError::OutOfRange { name: n, .. } if n == name),
+            matches!(&e, Error::Config(ConfigError::OutOfRange { name: n, .. }) if n == name),
             "{name} = {value}: {e}"
         );
     }
     assert!(matches!(
-        cfg.set("Masse", 30.0),
-        Err(ConfigError::UnknownParameter { .. })
+        s.apply(&param(physics, "Masse", 30.0)),
+        Err(Error::Config(ConfigError::UnknownParameter { .. }))
     ));
+    let cfg = s.wiring().config(physics).unwrap();
     assert_eq!(cfg.value("Mass").unwrap(), 20.0);
     assert_eq!(cfg.value("MaxTorque").unwrap(), 5.0);
     // Zero friction is allowed.
-    cfg.set("ViscousFriction", 0.0).unwrap();
+    s.apply(&param(physics, "ViscousFriction", 0.0)).unwrap();
     // A model outside the configuration's range cannot be built into a PhysicsSim.
     let heavy = PhysicsParams {
         mass: 5000.0,
@@ -204,34 +224,40 @@ fn a_scenario_configures_physics_sim_by_name() {
         "LocalPathPlanning": { "dmin": 0.6 }
     }));
     let scenario = Scenario::from_json(&json).unwrap();
-    let mut s = System::from_scenario(&scenario, &DirResolver::new("..")).unwrap();
-    let cfg = s.config(ComponentKind::PhysicsSim).unwrap();
+    let mut s = build(&scenario).unwrap();
+    let cfg = s.wiring().config(ComponentKind::PhysicsSim).unwrap();
     assert_eq!(cfg.effective_value("Mass").unwrap(), 35.0);
     assert_eq!(cfg.effective_value("MaxTorque").unwrap(), 2.5);
     assert_eq!(cfg.value("YawInertia").unwrap(), 1.0);
-    s.activate_all();
+    s.apply(&Input::ActivateAll).unwrap();
     s.step(1);
-    let model = s.physics().physics().params();
+    let model = s.wiring().physics().physics().params();
     assert_eq!((model.mass, model.max_torque), (35.0, 2.5));
 
     // A value out of range: the scenario is refused, naming the parameter.
     let json = open_field_json(serde_json::json!({ "PhysicsSim": { "Mass": -1.0 } }));
     let scenario = Scenario::from_json(&json).unwrap();
-    let e = System::from_scenario(&scenario, &DirResolver::new(".."))
-        .err()
-        .unwrap();
+    let e = build(&scenario).err().unwrap();
     assert!(
-        matches!(e, Error::System(SystemError::Scenario { .. })),
+        matches!(e, Error::Scenario(ScenarioError::Scenario { .. })),
         "{e}"
     );
     assert!(e.to_string().contains("`Mass`"), "{e}");
     // An unknown parameter too.
     let json = open_field_json(serde_json::json!({ "PhysicsSim0": { "Weight": 30.0 } }));
     let scenario = Scenario::from_json(&json).unwrap();
-    let e = System::from_scenario(&scenario, &DirResolver::new(".."))
-        .err()
-        .unwrap();
+    let e = build(&scenario).err().unwrap();
     assert!(e.to_string().contains("`Weight`"), "{e}");
+}
+
+/// The set-up of `scenario` as the runner and the page build it (files from the project).
+fn build(scenario: &Scenario) -> rtnav::Result<System> {
+    setup::build(
+        scenario,
+        &DirResolver::new(".."),
+        &Setup::of(scenario),
+        BuildOptions::default(),
+    )
 }
 
 // ---------------------------------------------------------------- the .conf bundle
@@ -268,7 +294,7 @@ fn with_line(text: &str, line: usize, new: &str) -> String {
 #[test]
 fn the_bundle_has_one_block_per_component_each_a_conf_file_of_its_own() {
     let s = System::new(Rates::default()).unwrap();
-    let text = s.to_conf();
+    let text = s.wiring().to_conf();
     assert_eq!(text.lines().next(), Some(CONF_BUNDLE_HEADER));
     assert_eq!(
         markers(&text),
@@ -282,7 +308,7 @@ fn the_bundle_has_one_block_per_component_each_a_conf_file_of_its_own() {
         ]
     );
     assert_eq!(
-        s.configured_components(),
+        s.wiring().configured_components(),
         [
             ComponentKind::PhysicsSim,
             ComponentKind::MotorControl,
@@ -292,19 +318,23 @@ fn the_bundle_has_one_block_per_component_each_a_conf_file_of_its_own() {
             ComponentKind::DriveControl
         ]
     );
-    // `config` and `config_mut` agree on who has parameters.
+    // Reading and setting agree on who has parameters: a component without any refuses a
+    // parameter as such, one with parameters refuses only the unknown name.
     let mut m = System::new(Rates::default()).unwrap();
     for kind in ComponentKind::ALL {
-        assert_eq!(s.config(kind).is_ok(), m.config_mut(kind).is_ok(), "{kind}");
+        let e = m.apply(&param(kind, "NoSuchParameter", 1.0)).unwrap_err();
+        let has_none = matches!(e, Error::System(SystemError::NoConfiguration { .. }));
+        assert_eq!(s.wiring().config(kind).is_err(), has_none, "{kind}: {e}");
     }
     // Each block is exactly that component's own `.conf` text, and loads alone.
-    for kind in s.configured_components() {
+    for kind in s.wiring().configured_components() {
         let marker = format!("# [{}]\n", kind.instance_name());
-        let own = s.config(kind).unwrap().to_conf();
+        let own = s.wiring().config(kind).unwrap().to_conf();
         assert!(text.contains(&format!("{marker}{own}")), "{kind}");
-        let conf = ConfFile::parse(&own).unwrap();
-        m.config_mut(kind).unwrap().load_conf(&conf).unwrap();
+        ConfFile::parse(&own).unwrap();
+        m.apply(&load_conf(&format!("{marker}{own}"))).unwrap();
     }
+    assert_eq!(m.wiring().to_conf(), text);
     assert!(text.contains("# [PhysicsSim0]\n# -*- Property -*-\n"));
     assert!(text.contains("conf.default.Mass: 20.0\n"));
     assert!(text.contains("conf.default.MaxTorque: 5.0\n"));
@@ -315,70 +345,92 @@ fn the_bundle_has_one_block_per_component_each_a_conf_file_of_its_own() {
 #[test]
 fn export_import_export_is_identical() {
     let mut s = System::new(Rates::default()).unwrap();
-    let fresh = s.to_conf();
-    s.load_conf(&fresh).unwrap();
-    assert_eq!(s.to_conf(), fresh);
+    let fresh = s.wiring().to_conf();
+    s.apply(&load_conf(&fresh)).unwrap();
+    assert_eq!(s.wiring().to_conf(), fresh);
     // Non-default values, a second configuration set and widgets (from the fixture).
-    s.config_mut(ComponentKind::PhysicsSim)
-        .unwrap()
-        .set("Mass", 31.25)
+    s.apply(&param(ComponentKind::PhysicsSim, "Mass", 31.25))
         .unwrap();
-    s.config_mut(ComponentKind::DriveControl)
-        .unwrap()
-        .set("MaxVelocity", 0.3)
+    s.apply(&param(ComponentKind::DriveControl, "MaxVelocity", 0.3))
         .unwrap();
     let fixture = std::fs::read_to_string("../fixtures/conf/LocalPathPlanning.conf").unwrap();
-    let conf = ConfFile::parse(&fixture).unwrap();
-    s.config_mut(ComponentKind::LocalPathPlanning)
-        .unwrap()
-        .load_conf(&conf)
+    s.apply(&load_conf(&format!("# [LocalPathPlanning]\n{fixture}")))
         .unwrap();
-    let first = s.to_conf();
+    let first = s.wiring().to_conf();
     assert_ne!(first, fresh);
     let mut t = System::new(Rates::default()).unwrap();
-    t.load_conf(&first).unwrap();
-    assert_eq!(t.to_conf(), first);
-    s.load_conf(&first).unwrap();
-    assert_eq!(s.to_conf(), first);
+    t.apply(&load_conf(&first)).unwrap();
+    assert_eq!(t.wiring().to_conf(), first);
+    s.apply(&load_conf(&first)).unwrap();
+    assert_eq!(s.wiring().to_conf(), first);
 }
 
 #[test]
 fn an_imported_value_reaches_the_configuration() {
     let mut s = System::new(Rates::default()).unwrap();
-    let text = s.to_conf();
+    let text = s.wiring().to_conf();
     let mass = line_of(&text, "PhysicsSim0", "conf.default.Mass:");
     let text = with_line(&text, mass, "conf.default.Mass: 42.5");
-    let dmin = line_of(&text, "LocalPathPlanning0", "conf.default.dmin:");
-    let text = with_line(&text, dmin, "conf.default.dmin = 0.75");
-    s.load_conf(&text).unwrap();
-    let physics = s.config(ComponentKind::PhysicsSim).unwrap();
+    let lpp_dmin = line_of(&text, "LocalPathPlanning0", "conf.default.dmin:");
+    let gpp_dmin = line_of(&text, "GlobalPathPlanning0", "conf.default.dmin:");
+    let text = with_line(&text, lpp_dmin, "conf.default.dmin = 0.75");
+
+    // Spec §3 Decision 0.2 "one dmin": a bundle giving the planners different values is
+    // refused, naming both, and nothing changes.
+    let before = s.wiring().to_conf();
+    assert_eq!(
+        s.apply(&load_conf(&text)).unwrap_err(),
+        Error::System(SystemError::DminMismatch {
+            first: "GlobalPathPlanning0",
+            first_value: 0.5,
+            second: "LocalPathPlanning0",
+            second_value: 0.75,
+        })
+    );
+    assert_eq!(s.wiring().to_conf(), before);
+
+    let text = with_line(&text, gpp_dmin, "conf.default.dmin: 0.75");
+    s.apply(&load_conf(&text)).unwrap();
+    let physics = s.wiring().config(ComponentKind::PhysicsSim).unwrap();
     assert_eq!(physics.value("Mass").unwrap(), 42.5);
     assert_eq!(physics.effective_value("Mass").unwrap(), 42.5);
-    assert_eq!(s.local_path_planning().params().dmin, 0.75);
-    // GlobalPathPlanning's own `dmin` is its own block's.
-    let gpp = s.config(ComponentKind::GlobalPathPlanning).unwrap();
-    assert_eq!(gpp.value("dmin").unwrap(), 0.5);
+    assert_eq!(s.wiring().local_path_planning().params().dmin, 0.75);
+    assert_eq!(s.wiring().global_path_planning().params().dmin, 0.75);
     // The physics uses it from its next tick.
-    s.activate(ComponentKind::PhysicsSim).unwrap();
+    s.apply(&Input::Activate {
+        component: ComponentKind::PhysicsSim,
+    })
+    .unwrap();
     s.step(1);
-    assert_eq!(s.physics().physics().params().mass, 42.5);
+    assert_eq!(s.wiring().physics().physics().params().mass, 42.5);
 
     // A bundle of one component (the fixture's hand-written file after a marker) changes
-    // only that component; its active set is `mode1`.
-    let before = s.to_conf();
+    // only that component; its active set is `mode1` ...
+    let before = s.wiring().to_conf();
     let fixture = std::fs::read_to_string("../fixtures/conf/LocalPathPlanning.conf").unwrap();
-    s.load_conf(&format!("# [LocalPathPlanning]\n{fixture}"))
+    s.apply(&load_conf(&format!("# [LocalPathPlanning]\n{fixture}")))
         .unwrap();
-    let lpp = s.config(ComponentKind::LocalPathPlanning).unwrap();
+    let lpp = s.wiring().config(ComponentKind::LocalPathPlanning).unwrap();
     assert_eq!(lpp.active_set(), "mode1");
     assert_eq!(lpp.value("dmin").unwrap(), 0.25);
-    let after = s.to_conf();
+    // ... but for `dmin`, one value for the system (spec §3 Decision 0.2).
+    let gpp = s
+        .wiring()
+        .config(ComponentKind::GlobalPathPlanning)
+        .unwrap();
+    assert_eq!(gpp.value("dmin").unwrap(), 0.25);
+    let after = s.wiring().to_conf();
     let block = |t: &str, name: &str| {
         let start = t.find(&format!("# [{name}]")).unwrap();
         let rest = &t[start + 1..];
         rest[..rest.find("# [").unwrap_or(rest.len())].to_owned()
     };
-    for name in ["PhysicsSim0", "MotorControl0", "DriveControl0"] {
+    for name in [
+        "PhysicsSim0",
+        "MotorControl0",
+        "Localization0",
+        "DriveControl0",
+    ] {
         assert_eq!(block(&after, name), block(&before, name), "{name}");
     }
 }
@@ -386,11 +438,9 @@ fn an_imported_value_reaches_the_configuration() {
 #[test]
 fn a_bad_bundle_changes_nothing_and_names_line_component_and_problem() {
     let mut s = System::new(Rates::default()).unwrap();
-    s.config_mut(ComponentKind::DriveControl)
-        .unwrap()
-        .set("MaxVelocity", 0.4)
+    s.apply(&param(ComponentKind::DriveControl, "MaxVelocity", 0.4))
         .unwrap();
-    let good = s.to_conf();
+    let good = s.wiring().to_conf();
     // A valid change early in the file, so a late error must undo nothing that was applied.
     let mass = line_of(&good, "PhysicsSim0", "conf.default.Mass:");
     let base = with_line(&good, mass, "conf.default.Mass: 50.0");
@@ -432,29 +482,33 @@ fn a_bad_bundle_changes_nothing_and_names_line_component_and_problem() {
         ),
     ];
     for (text, line, component, problem) in &cases {
-        let e = s.load_conf(text).unwrap_err();
+        let e = s.apply(&load_conf(text)).unwrap_err();
         assert_eq!(
             e.to_string(),
             format!("configuration file line {line}, component `{component}`: {problem}")
         );
         match e {
-            Error::System(SystemError::ConfBlock {
+            Error::ConfBundle(ConfBundleError::ConfBlock {
                 component: c,
                 line: l,
                 ..
             }) => assert_eq!((c.as_str(), l), (*component, *line)),
             other => panic!("{other:?}"),
         }
-        assert_eq!(s.to_conf(), good, "changed by a bad file: {problem}");
+        assert_eq!(
+            s.wiring().to_conf(),
+            good,
+            "changed by a bad file: {problem}"
+        );
     }
 
     // Markers and text outside blocks.
     let e = s
-        .load_conf(&with_line(&base, dc_marker, "# [Planner0]"))
+        .apply(&load_conf(&with_line(&base, dc_marker, "# [Planner0]")))
         .unwrap_err();
     assert_eq!(
         e,
-        Error::System(SystemError::ConfUnknownComponent {
+        Error::ConfBundle(ConfBundleError::ConfUnknownComponent {
             line: dc_marker,
             name: "Planner0".to_owned(),
             expected: "PhysicsSim0, MotorControl0, Localization0, GlobalPathPlanning0, \
@@ -469,38 +523,41 @@ fn a_bad_bundle_changes_nothing_and_names_line_component_and_problem() {
         "{e}"
     );
     let e = s
-        .load_conf(&with_line(&base, dc_marker, "# [MapBuilder0]"))
+        .apply(&load_conf(&with_line(&base, dc_marker, "# [MapBuilder0]")))
         .unwrap_err();
     assert!(
-        matches!(&e, Error::System(SystemError::ConfUnknownComponent { name, .. }) if name == "MapBuilder0"),
+        matches!(&e, Error::ConfBundle(ConfBundleError::ConfUnknownComponent { name, .. }) if name == "MapBuilder0"),
         "{e}"
     );
     let e = s
-        .load_conf(&with_line(&base, dc_marker, "# [PhysicsSim0]"))
+        .apply(&load_conf(&with_line(&base, dc_marker, "# [PhysicsSim0]")))
         .unwrap_err();
     assert_eq!(
         e,
-        Error::System(SystemError::ConfDuplicateComponent {
+        Error::ConfBundle(ConfBundleError::ConfDuplicateComponent {
             line: dc_marker,
             component: "PhysicsSim0".to_owned(),
             first: 3,
         })
     );
     let e = s
-        .load_conf(&format!("# a comment\n\nconf.default.Mass: 30\n{base}"))
+        .apply(&load_conf(&format!(
+            "# a comment\n\nconf.default.Mass: 30\n{base}"
+        )))
         .unwrap_err();
     assert_eq!(
         e,
-        Error::System(SystemError::ConfOutsideBlock {
+        Error::ConfBundle(ConfBundleError::ConfOutsideBlock {
             line: 3,
             text: "conf.default.Mass: 30".to_owned(),
         })
     );
-    assert_eq!(s.to_conf(), good);
+    assert_eq!(s.wiring().to_conf(), good);
     // And the base itself is fine.
-    s.load_conf(&base).unwrap();
+    s.apply(&load_conf(&base)).unwrap();
     assert_eq!(
-        s.config(ComponentKind::PhysicsSim)
+        s.wiring()
+            .config(ComponentKind::PhysicsSim)
             .unwrap()
             .value("Mass")
             .unwrap(),
@@ -533,42 +590,48 @@ const DMIN: f64 = 0.25;
 
 fn inspector_system() -> System {
     let mut s = System::new(Rates::default()).unwrap();
-    for kind in [
-        ComponentKind::GlobalPathPlanning,
-        ComponentKind::LocalPathPlanning,
-    ] {
-        s.config_mut(kind).unwrap().set("dmin", DMIN).unwrap();
-    }
+    // One `dmin` (spec §3 Decision 0.2): LocalPathPlanning's sets GlobalPathPlanning's too.
+    s.apply(&param(ComponentKind::LocalPathPlanning, "dmin", DMIN))
+        .unwrap();
     s.load_map(inspector_map());
     // From cell (3, 3) to cell (16, 3), over the wall.
-    s.set_position(
-        Pose::new(0.35, 0.35, 0.0),
-        Pose::new(1.65, 0.35, 0.0),
-        Direction::Forward,
-    )
+    s.apply(&Input::SetPosition {
+        start: Pose::new(0.35, 0.35, 0.0),
+        goal: Pose::new(1.65, 0.35, 0.0),
+        direction: Direction::Forward,
+    })
     .unwrap();
     s
+}
+
+/// Activates the planning components and runs until they have planned, the robot standing
+/// (what the set-up builder does).
+fn plan(s: &mut System) -> bool {
+    for component in ComponentKind::PLANNING {
+        s.apply(&Input::Activate { component }).unwrap();
+    }
+    s.run_until_planned(PLAN_SECONDS).unwrap()
 }
 
 #[test]
 fn inspecting_needs_a_map_and_a_cell_inside_it() {
     let s = System::new(Rates::default()).unwrap();
     assert_eq!(
-        s.inspect_cell(0, 0).unwrap_err(),
+        s.wiring().inspect_cell(0, 0).unwrap_err(),
         Error::System(SystemError::NoMap {
             call: "inspect_cell"
         })
     );
     let s = inspector_system();
     for (x, y) in [(24, 0), (0, 16), (-1, 5), (5, -1), (i64::MAX, i64::MIN)] {
-        let e = s.inspect_cell(x, y).unwrap_err();
+        let e = s.wiring().inspect_cell(x, y).unwrap_err();
         assert_eq!(
             e.to_string(),
             format!("cell ({x}, {y}) is outside the map (24 × 16 cells)")
         );
     }
     // No local plan yet: the map only.
-    let c = s.inspect_cell(23, 15).unwrap();
+    let c = s.wiring().inspect_cell(23, 15).unwrap();
     assert_eq!(c.field, None);
     assert_eq!((c.occupancy, c.obstacle_distance), (0, 0.1));
     assert!(c.impassable);
@@ -578,12 +641,13 @@ fn inspecting_needs_a_map_and_a_cell_inside_it() {
 fn a_cell_shows_the_map_and_the_potential_field_parts() {
     let mut s = inspector_system();
     s.set_full_field(true);
-    let planned = s.preview(5.0).unwrap();
-    assert!(planned, "{:?}", s.events());
-    let field = s.local_path_planning().potential_field().unwrap();
+    let planned = plan(&mut s);
+    assert!(planned, "{:?}", s.record().events());
+    let w = s.wiring();
+    let field = w.local_path_planning().potential_field().unwrap();
 
     // An obstacle cell.
-    let c = s.inspect_cell(9, 2).unwrap();
+    let c = w.inspect_cell(9, 2).unwrap();
     assert_eq!((c.x, c.y, c.occupancy), (9, 2, 1));
     assert_eq!(c.obstacle_distance, 0.0);
     assert!(c.impassable);
@@ -596,7 +660,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
     );
 
     // Two cells from the wall: 0.2 m ≤ dmin, impassable although free.
-    let c = s.inspect_cell(7, 2).unwrap();
+    let c = w.inspect_cell(7, 2).unwrap();
     assert_eq!(c.occupancy, 0);
     assert!((c.obstacle_distance - 0.2).abs() < 1e-12);
     assert!(c.impassable);
@@ -604,7 +668,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
 
     // Three cells from the wall: 0.3 m, reached; R = 1 / (0.3 − 0.25)² = 400.
     let cell = (6usize, 2usize);
-    let c = s.inspect_cell(6, 2).unwrap();
+    let c = w.inspect_cell(6, 2).unwrap();
     assert!((c.obstacle_distance - 0.3).abs() < 1e-12);
     assert!(!c.impassable);
     let f = c.field.clone().unwrap();
@@ -628,7 +692,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
 
     // The local target: G = 0.1, no parts.
     let target = field.request().unwrap().target;
-    let c = s.inspect_cell(target.0 as i64, target.1 as i64).unwrap();
+    let c = w.inspect_cell(target.0 as i64, target.1 as i64).unwrap();
     let f = c.field.unwrap();
     assert_eq!(f.potential, Some(0.1));
     assert_eq!(
@@ -637,7 +701,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
     );
 
     // Inside the closed room: passable, never reached.
-    let c = s.inspect_cell(20, 12).unwrap();
+    let c = w.inspect_cell(20, 12).unwrap();
     assert!((c.obstacle_distance - 0.3).abs() < 1e-12);
     assert!(!c.impassable);
     let f = c.field.unwrap();
@@ -646,7 +710,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
     assert_eq!(f.potential, None);
 
     // The JSON of the contract.
-    let json = serde_json::to_value(s.inspect_cell(6, 2).unwrap()).unwrap();
+    let json = serde_json::to_value(w.inspect_cell(6, 2).unwrap()).unwrap();
     let keys = |v: &serde_json::Value| -> BTreeSet<String> {
         v.as_object().unwrap().keys().cloned().collect()
     };
@@ -674,7 +738,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
         ])
     );
     assert_eq!(json["field"]["state"], "Reached");
-    let unreached = serde_json::to_value(s.inspect_cell(20, 12).unwrap()).unwrap();
+    let unreached = serde_json::to_value(w.inspect_cell(20, 12).unwrap()).unwrap();
     assert!(unreached["field"]["potential"].is_null());
     assert_eq!(unreached["field"]["unreached"], true);
 }

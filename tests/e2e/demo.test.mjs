@@ -5,14 +5,15 @@
 // drawn on open; Activate all → the robot drives to the goal; an obstacle painted on the
 // path while Active → a replan around it; a goal dropped in an obstacle → refused, the old
 // goal and path kept; Inject fault → Error with its reason → Reset → Inactive → Activate; a
-// bump → Error → Reset all; a bad map file → refused, the map kept; the frame budget at
-// 1280×800 (printed); a Rust panic shown as a crash.
+// bump → Error → Reset all; a bad map file → refused, the map kept; a MovingAI map of the
+// external data (skipped without it); the frame budget at 1280×800 (printed); a Rust panic
+// shown as a crash.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import {
-  REPO, WAIT, COLOURS, launch, openPage, screenshot, plan, telemetry, mapInfo, cellToPage,
-  expectState, activateAll, logged,
+  REPO, DATA, DATA_MISSING, WAIT, COLOURS, launch, openPage, screenshot, plan, telemetry, mapInfo,
+  cellToPage, expectState, activateAll, logged,
 } from './helpers.mjs';
 
 /** The frame budget of one frame (simulation + render + blit), ms. */
@@ -271,9 +272,9 @@ test('a bad map file is refused with the reason; the current map stays', { timeo
   await page.setInputFiles('#map-file', [join(REPO, 'fixtures/maps/tiny.yaml'), join(REPO, 'fixtures/maps/tiny.pgm')]);
   await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'tiny.yaml', null, WAIT);
   assert.equal((await mapInfo(page)).grid_size, 0.25);
-  await page.setInputFiles('#map-file', join(REPO, '..', 'shared', 'data', 'movingai', 'dao', 'arena.map'));
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'arena.map', null, WAIT);
-  assert.deepEqual(await mapInfo(page).then((m) => [m.width, m.height, m.grid_size]), [49, 49, 1]);
+  await page.setInputFiles('#map-file', join(REPO, 'fixtures/maps/yard.map'));
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'yard.map', null, WAIT);
+  assert.deepEqual(await mapInfo(page).then((m) => [m.width, m.height, m.grid_size]), [9, 6, 1]);
   // A good map file loads, with the planners Active and no goal yet.
   const rows = ['########', '#......#', '#......#', '#......#', '########'];
   await page.setInputFiles('#map-file', {
@@ -290,6 +291,15 @@ test('a bad map file is refused with the reason; the current map stays', { timeo
   await page.waitForFunction(() => document.getElementById('about-title').textContent.includes('backward dock'), null, WAIT);
   assert.equal((await mapInfo(page)).name, 'fixtures/maps/scenarios/backward_dock.json');
   assert.ok((await plan(page)).goal);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a MovingAI benchmark map (external data) loads from the file picker', { timeout: 60_000, skip: DATA_MISSING ?? false }, async () => {
+  const { page, problems } = await open();
+  await page.setInputFiles('#map-file', join(DATA, 'movingai', 'dao', 'arena.map'));
+  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.map_json()).name === 'arena.map', null, WAIT);
+  assert.deepEqual(await mapInfo(page).then((m) => [m.width, m.height, m.grid_size]), [49, 49, 1]);
   assert.deepEqual(problems, []);
   await page.close();
 });

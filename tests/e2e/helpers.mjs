@@ -2,6 +2,7 @@
 // downloaded browser) against the page served by `cargo xtask test` at $RTNAV_URL, and small
 // readers of the page's state.
 import assert from 'node:assert/strict';
+import { statSync } from 'node:fs';
 import { mkdtemp, mkdir, rm, copyFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
@@ -12,6 +13,19 @@ export const URL = process.env.RTNAV_URL ?? 'http://127.0.0.1:8080/';
 export const CHROMIUM = process.env.RTNAV_CHROMIUM ?? '/usr/bin/chromium';
 export const HERE = dirname(fileURLToPath(import.meta.url));
 export const REPO = join(HERE, '..', '..');
+
+/**
+ * The external data folder (real maps nobody on the project wrote): $RTNAV_DATA, else
+ * ../shared/data beside the repository, as `rtnav::data` finds it. `DATA_MISSING` is why
+ * there is none (a test that needs it is skipped with that reason), or null.
+ */
+export const DATA = process.env.RTNAV_DATA ?? join(REPO, '..', 'shared', 'data');
+const isDir = (p) => { try { return statSync(p).isDirectory(); } catch { return false; } };
+export const DATA_MISSING = process.env.RTNAV_DATA === ''
+  ? 'external data not found: RTNAV_DATA is set but empty'
+  : isDir(DATA)
+    ? null
+    : `external data not found: ${process.env.RTNAV_DATA === undefined ? `RTNAV_DATA is unset and ${DATA}` : `RTNAV_DATA=${DATA}`} is not a folder`;
 const ARGS = [
   '--headless',
   '--no-sandbox',

@@ -1,7 +1,7 @@
 //! [`Demo`]: a [`Session`] (the system as a person drives it) and the renderer behind one
-//! handle (SPEC §5 InventGUI).
+//! handle (spec §5 InventGUI).
 //!
-//! Every method is one request to the core: the lifecycle requests of SPEC §1 (per
+//! Every method is one request to the core: the lifecycle requests of spec §1 (per
 //! component and for all), `SetPosition`, `Clear`, `SafeMode`, `MapUpdate`, parameters,
 //! map and scenario loading, stepping, drawing. What the page reads comes back as JSON
 //! (`views`). The page's model of a run — the planning preview, the robot waiting for
@@ -10,9 +10,9 @@
 
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
-use rtnav::render::{Layers, Renderer};
+use rtnav::render::{Layers, Renderer, caption};
 use rtnav::rtc::LifecycleState;
-use rtnav::system::{ComponentKind, Scenario, Session, System};
+use rtnav::system::{ComponentInfo, ComponentKind, Input, Scenario, Session, System};
 use wasm_bindgen::prelude::*;
 
 use crate::files::Files;
@@ -120,59 +120,62 @@ impl Inner {
         ComponentKind::from_name(name).map_err(msg)
     }
 
-    pub(crate) fn activate(&mut self, name: &str) -> Msg<LifecycleState> {
-        let r = self.session.activate(Self::kind(name)?);
+    /// One request to the session ([`Session::apply`]).
+    pub(crate) fn apply(&mut self, input: &Input) -> Msg<()> {
+        let r = self.session.apply(input);
         self.changed(r)
+    }
+
+    /// A lifecycle request on the component `name`; returns the state it reached.
+    fn lifecycle(
+        &mut self,
+        name: &str,
+        request: fn(ComponentKind) -> Input,
+    ) -> Msg<LifecycleState> {
+        let component = Self::kind(name)?;
+        self.apply(&request(component))?;
+        Ok(self.system().component_state(component))
+    }
+
+    pub(crate) fn activate(&mut self, name: &str) -> Msg<LifecycleState> {
+        self.lifecycle(name, |component| Input::Activate { component })
     }
 
     pub(crate) fn deactivate(&mut self, name: &str) -> Msg<LifecycleState> {
-        let r = self.session.deactivate(Self::kind(name)?);
-        self.changed(r)
+        self.lifecycle(name, |component| Input::Deactivate { component })
     }
 
     pub(crate) fn reset(&mut self, name: &str) -> Msg<LifecycleState> {
-        let r = self.session.reset(Self::kind(name)?);
-        self.changed(r)
+        self.lifecycle(name, |component| Input::Reset { component })
     }
 
     pub(crate) fn inject_fault(&mut self, name: &str) -> Msg<()> {
-        let r = self.session.inject_fault(Self::kind(name)?, FAULT_REASON);
-        self.changed(r)
+        let component = Self::kind(name)?;
+        self.apply(&Input::InjectFault {
+            component,
+            reason: FAULT_REASON.to_owned(),
+        })
     }
 
-    pub(crate) fn inject_input(&mut self, name: &str, port: &str, values: Vec<f64>) -> Msg<()> {
-        let r = self.session.inject_input(Self::kind(name)?, port, values);
-        self.changed(r)
+    pub(crate) fn inject_input(&mut self, name: &str, port: &str, data: Vec<f64>) -> Msg<()> {
+        let component = Self::kind(name)?;
+        self.apply(&Input::InjectInput {
+            component,
+            port: port.to_owned(),
+            data,
+        })
     }
 
-    pub(crate) fn activate_all(&mut self) -> String {
-        self.dirty = true;
-        self.session.activate_all().to_string()
-    }
-
-    pub(crate) fn deactivate_all(&mut self) -> String {
-        self.dirty = true;
-        self.session.deactivate_all().to_string()
-    }
-
-    pub(crate) fn reset_all(&mut self) -> String {
-        self.dirty = true;
-        self.session.reset_all().to_string()
+    /// A request on every component; returns the system's state.
+    pub(crate) fn all(&mut self, input: &Input) -> String {
+        // Requests on all components are never refused.
+        let _ = self.apply(input);
+        self.system().state().to_string()
     }
 
     // ------------------------------------------------------------------ inputs
 
-    pub(crate) fn set_position(&mut self, start: Pose, goal: Pose, backward: bool) -> Msg<()> {
-        let r = self.session.set_position(start, goal, direction(backward));
-        self.changed(r)
-    }
-
-    pub(crate) fn set_goal(&mut self, goal: Pose, backward: bool) -> Msg<()> {
-        let r = self.session.set_goal(goal, direction(backward));
-        self.changed(r)
-    }
-
-    pub(crate) fn set_cells(&mut self, xs: &[i32], ys: &[i32], value: i16) -> Msg<usize> {
+    pub(crate) fn set_cells(&mut self, xs: &[i32], ys: &[i32], value: i16) -> Msg<()> {
         if xs.len() != ys.len() {
             return Err(format!(
                 "MapUpdate: {} x indices but {} y indices",
@@ -185,18 +188,7 @@ impl Inner {
             .zip(ys)
             .map(|(&x, &y)| (i64::from(x), i64::from(y), value))
             .collect();
-        let r = self.session.set_cells(&cells);
-        self.changed(r)
-    }
-
-    pub(crate) fn clear(&mut self) {
-        self.session.clear();
-        self.dirty = true;
-    }
-
-    pub(crate) fn safe_mode(&mut self) {
-        self.session.safe_mode();
-        self.dirty = true;
+        self.apply(&Input::MapUpdate { cells })
     }
 
     // ------------------------------------------------------------------ drawing
@@ -207,11 +199,13 @@ impl Inner {
         if !self.dirty {
             return Ok(false);
         }
-        let Some(mut scene) = self.session.scene() else {
+        let system = self.session.system();
+        if system.map().is_none() {
             return Ok(false);
-        };
-        scene.layers = self.layers;
-        self.renderer.render(&scene).map_err(msg)?;
+        }
+        self.renderer
+            .render_system(system, &caption(system), self.layers)
+            .map_err(msg)?;
         self.dirty = false;
         Ok(true)
     }
@@ -250,12 +244,12 @@ impl Inner {
     // ------------------------------------------------------------------ reading
 
     pub(crate) fn components(&self) -> Vec<ComponentView> {
-        let system = self.system();
-        let ec = system.execution_context();
+        let wiring = self.system().wiring();
+        let ec = wiring.execution_context();
         ComponentKind::ALL
             .into_iter()
             .map(|kind| {
-                let info = system.component_info(kind);
+                let info = ComponentInfo::of(wiring, kind);
                 ComponentView {
                     name: kind.name(),
                     colour: info.state.editor_colour(),
@@ -268,7 +262,7 @@ impl Inner {
 
     pub(crate) fn take_events(&mut self) -> Vec<EventView> {
         self.session
-            .drain_events()
+            .new_events()
             .iter()
             .map(EventView::of)
             .collect()
@@ -278,21 +272,23 @@ impl Inner {
         let s = self.system();
         let pose = s.robot_pose();
         let stats = s.stats();
-        let last = s.telemetry().last();
+        let m = s.mission();
+        let last = s.record().telemetry().last();
         let pick = |f: fn(&rtnav::system::TelemetrySample) -> f64| last.map_or(0.0, f);
         TelemetryView {
             time_s: s.time(),
             state: s.state(),
             driving: s.is_driving(),
-            arrived: s.is_arrived(),
-            halted: s.is_halted(),
+            status: self.session.status().to_string(),
+            arrived: m.is_arrived(),
+            halted: m.is_halted(),
             paused: self.session.paused(),
             speed: self.session.speed(),
             pose: pose.into(),
-            start: s.start().map(PoseView::from),
-            goal: s.goal().map(PoseView::from),
-            direction: direction_name(s.direction()),
-            distance_to_goal: s.goal().map(|g| libm::hypot(g.x - pose.x, g.y - pose.y)),
+            start: m.start().map(PoseView::from),
+            goal: m.goal().map(PoseView::from),
+            direction: direction_name(m.direction()),
+            distance_to_goal: m.goal().map(|g| libm::hypot(g.x - pose.x, g.y - pose.y)),
             v: pick(|t| t.v),
             w: pick(|t| t.w),
             v_cmd: pick(|t| t.v_cmd),
@@ -312,12 +308,13 @@ impl Inner {
 
     pub(crate) fn plan(&self) -> PlanView {
         let s = self.system();
-        let lpp = s.local_path_planning();
+        let lpp = s.wiring().local_path_planning();
+        let m = s.mission();
         PlanView {
-            start: s.start().map(PoseView::from),
-            goal: s.goal().map(PoseView::from),
-            direction: direction_name(s.direction()),
-            global_path: s.global_path().to_vec(),
+            start: m.start().map(PoseView::from),
+            goal: m.goal().map(PoseView::from),
+            direction: direction_name(m.direction()),
+            global_path: m.route().to_vec(),
             local_path: lpp.merged_path().to_vec(),
             control_points: lpp
                 .control_points()
@@ -354,7 +351,7 @@ impl Inner {
             grid_size: m.grid_size(),
             origin: m.origin(),
             obstacles: m.cells().iter().filter(|&&c| c != 0).count(),
-            key: s.map_key(),
+            key: s.wiring().map_key(),
         })
     }
 }
@@ -483,18 +480,18 @@ impl Demo {
 
     /// Activates every Inactive component. Returns the system's state.
     pub fn activate_all(&mut self) -> String {
-        self.0.activate_all()
+        self.0.all(&Input::ActivateAll)
     }
 
     /// Deactivates every Active component. Returns the system's state.
     pub fn deactivate_all(&mut self) -> String {
-        self.0.deactivate_all()
+        self.0.all(&Input::DeactivateAll)
     }
 
     /// Resets every component in Error and deactivates the Active ones. Returns the
     /// system's state.
     pub fn reset_all(&mut self) -> String {
-        self.0.reset_all()
+        self.0.all(&Input::ResetAll)
     }
 
     /// The system's state: `Inactive`, `Active`, `Partial` or `Error`.
@@ -525,11 +522,11 @@ impl Demo {
         backward: bool,
     ) -> Result<(), JsError> {
         self.0
-            .set_position(
-                pose(start_x, start_y, start_deg),
-                pose(goal_x, goal_y, goal_deg),
-                backward,
-            )
+            .apply(&Input::SetPosition {
+                start: pose(start_x, start_y, start_deg),
+                goal: pose(goal_x, goal_y, goal_deg),
+                direction: direction(backward),
+            })
             .map_err(js)
     }
 
@@ -542,23 +539,31 @@ impl Demo {
         theta_deg: f64,
         backward: bool,
     ) -> Result<(), JsError> {
-        self.0.set_goal(pose(x, y, theta_deg), backward).map_err(js)
+        self.0
+            .apply(&Input::SetGoal {
+                goal: pose(x, y, theta_deg),
+                direction: direction(backward),
+            })
+            .map_err(js)
     }
 
-    /// `MapUpdate` of the cells `(xs[i], ys[i])` to `value` (1 obstacle, 0 free). Returns
-    /// how many changed; cells outside the map are an error and nothing changes.
-    pub fn set_cells(&mut self, xs: Vec<i32>, ys: Vec<i32>, value: i16) -> Result<usize, JsError> {
+    /// `MapUpdate` of the cells `(xs[i], ys[i])` to `value` (1 obstacle, 0 free): one stroke
+    /// (or one frame of it) is one update. Cells outside the map are an error and nothing
+    /// changes; an update that changes no cell requests nothing.
+    pub fn set_cells(&mut self, xs: Vec<i32>, ys: Vec<i32>, value: i16) -> Result<(), JsError> {
         self.0.set_cells(&xs, &ys, value).map_err(js)
     }
 
     /// `Clear`: the paths and the goal are dropped; the robot stops.
     pub fn clear(&mut self) {
-        self.0.clear();
+        // Never refused.
+        let _ = self.0.apply(&Input::Clear);
     }
 
     /// `SafeMode`: the robot halts until the next goal.
     pub fn safe_mode(&mut self) {
-        self.0.safe_mode();
+        // Never refused.
+        let _ = self.0.apply(&Input::SafeMode);
     }
 
     // ------------------------------------------------------------------ drawing

@@ -4,12 +4,12 @@
 //! ([`Demo`], a newtype over the whole [`System`](rtnav::system::System) and its
 //! [`Renderer`](rtnav::render::Renderer)), owns the clock (`requestAnimationFrame`) and
 //! calls [`Demo::step`] with the elapsed wall time, which becomes whole ticks of simulated
-//! time (SPEC §6: components never read a clock). The frame is drawn into Rust memory and
+//! time (spec §6: components never read a clock). The frame is drawn into Rust memory and
 //! shown by the page without a copy: a `Uint8ClampedArray` view at [`Demo::frame_ptr`] over
 //! `memory.buffer` → `ImageData` → `putImageData` (the Rust and WebAssembly book's game of
 //! life). Errors become `JsError`s only here, with the core's message.
 //!
-//! Panics are bugs (SPEC §1), but a page must show one rather than freeze: the panic hook
+//! Panics are bugs (spec §1), but a page must show one rather than freeze: the panic hook
 //! installed at start-up records the message, which [`has_panicked`] and [`panic_message`]
 //! report (the style of egui's `WebHandle`). They are free functions because after a panic
 //! the handle that panicked stays borrowed and every further call on it throws.

@@ -1,7 +1,7 @@
 //! The teaching tools' requests (issue 8): parameters, `SetPDGain`, plots, share links and
 //! the telemetry CSV — each one call into the core's [`Session`](rtnav::system::Session).
 
-use rtnav::system::{ComponentKind, Session};
+use rtnav::system::{ComponentKind, Input, Session};
 use wasm_bindgen::prelude::*;
 
 use crate::demo::{Demo, json};
@@ -21,28 +21,32 @@ impl Demo {
     /// that is not a number, or one out of range.
     pub fn set_param(&mut self, component: &str, name: &str, text: &str) -> Result<(), JsError> {
         let kind = ComponentKind::from_name(component).map_err(|e| js(msg(e)))?;
-        let r = self.0.session.set_param(kind, name, text);
+        let r = self.0.session.set_param_text(kind, name, text);
         self.0.changed(r).map_err(js)
     }
 
     /// MotorControl's `Motor::SetPDGain(PGainL, PGainR, DGainL, DGainR)`; all four checked
     /// first, nothing changes on an error.
     pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> Result<(), JsError> {
-        let r = self.0.session.set_pd_gain(p_l, p_r, d_l, d_r);
-        self.0.changed(r).map_err(js)
+        self.0
+            .apply(&Input::SetPdGain { p_l, p_r, d_l, d_r })
+            .map_err(js)
     }
 
     /// The whole configuration (every component that has parameters) as one OpenRTM
     /// `.conf` text: a block per component after its marker line `# [InstanceName]`.
     pub fn conf_export(&self) -> String {
-        self.0.system().to_conf()
+        self.0.system().wiring().to_conf()
     }
 
     /// Replaces the configuration from a `.conf` text as [`Demo::conf_export`] writes it;
     /// all-or-nothing, refused with the line and the problem.
     pub fn conf_import(&mut self, text: &str) -> Result<(), JsError> {
-        let r = self.0.session.load_conf(text);
-        self.0.changed(r).map_err(js)
+        self.0
+            .apply(&Input::LoadConf {
+                text: text.to_owned(),
+            })
+            .map_err(js)
     }
 
     /// The cell `(x, y)` explained as JSON `{x, y, occupancy, obstacle_distance, impassable,
@@ -52,6 +56,7 @@ impl Demo {
         let cell = self
             .0
             .system()
+            .wiring()
             .inspect_cell(i64::from(x), i64::from(y))
             .map_err(|e| js(msg(e)))?;
         json(&cell)
@@ -65,7 +70,7 @@ impl Demo {
 
     /// The telemetry history as CSV (header first).
     pub fn telemetry_csv(&self) -> String {
-        self.0.system().telemetry().to_csv()
+        self.0.system().record().telemetry().to_csv()
     }
 
     /// The set-up (scenario, start and goal, map edits, changed parameters) as a URL-safe

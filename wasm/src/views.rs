@@ -100,6 +100,8 @@ pub(crate) struct TelemetryView {
     pub time_s: f64,
     pub state: SystemState,
     pub driving: bool,
+    /// What the robot is doing, in words (`rtnav::system::Status`).
+    pub status: String,
     pub arrived: bool,
     pub halted: bool,
     pub paused: bool,

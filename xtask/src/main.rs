@@ -1,19 +1,21 @@
 //! `cargo xtask`: the steps cargo alone cannot do (matklad's cargo-xtask pattern).
 //!
-//! Nothing to install but cargo: every command installs the tools it needs when they are
-//! missing (the wasm target, `wasm-bindgen-cli` at the version pinned in the root
-//! `Cargo.toml`, `wasm-pack`, Debian's `chromium`, the e2e test's npm
+//! Nothing to install but cargo and Node: every command installs the tools it needs when they
+//! are missing (the wasm target, `wasm-bindgen-cli` at the version pinned in the root
+//! `Cargo.toml`, binaryen's `wasm-opt` from npm, Debian's `chromium`, the e2e test's npm
 //! packages) and is safe to run again. Nothing is downloaded from GitHub.
 //!
 //! ```text
 //! cargo xtask demo [--port N]     build the wasm and serve web/ (default http://127.0.0.1:8080/)
 //! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
+//! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test                every check CI runs, with a summary
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
 //! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
 //! ```
 
+mod dist;
 mod fixtures;
 mod fuzz;
 mod serve;
@@ -22,6 +24,7 @@ mod test;
 mod tools;
 mod wasm;
 
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Errors are reported to the user as text; nothing here recovers from them.
@@ -38,8 +41,12 @@ commands:
   build-wasm [--dev]   build rtnav-wasm into web/pkg (release unless --dev) and copy
                        the scenario fixtures and their maps into web/fixtures
   serve [--port N]     copy the fixtures and serve web/ without building
-  test                 cargo test, clippy (native and wasm32), rustfmt, a one-hour soak,
-                       the wasm tests under Node and the browser end-to-end tests
+  dist [DIR]           build the wasm and write the page, the wasm and the scenarios
+                       as a static folder for any static host (default dist/)
+  test                 cargo test, clippy (native and wasm32), rustfmt, a short fuzz run,
+                       a one-hour soak, the wasm tests under Node, the page's build and
+                       the browser end-to-end tests (against the dist folder, served under
+                       a sub-path)
   fuzz [--seconds N] [--seed S] [--target NAME]...
                        fuzz the readers and the hostile calls in release mode for N s in
                        all (default 300); prints per target the inputs tried, the failures
@@ -48,7 +55,10 @@ commands:
                        drive open_field and the Willow Garage ROS map (or FILE) for H
                        simulated hours (default 24) with random goals and map edits; fails
                        on a bump, an error, a stuck period or growing memory
-  help                 this text";
+  help                 this text
+
+External data (the real maps of some tests and scenarios) is read from $RTNAV_DATA, else
+../shared/data beside the repository; without it they are skipped with a line.";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -70,7 +80,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
         "demo" => {
             let port = port_option(rest)?;
             wasm::build(wasm::Profile::Release)?;
-            serve::serve_forever(port)?;
+            serve::serve_forever(serve::web_root(), port)?;
         }
         "build-wasm" => {
             let profile = match rest {
@@ -81,9 +91,29 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             wasm::build(profile)?;
         }
         "serve" => {
+            // `--dir DIR` (after the port option) serves another folder as it is: the e2e
+            // stage's server of the dist folder.
+            let (rest, dir) = match rest {
+                [head @ .., flag, dir] if flag == "--dir" => (head, Some(PathBuf::from(dir))),
+                _ => (rest, None),
+            };
             let port = port_option(rest)?;
-            fixtures::stage()?;
-            serve::serve_forever(port)?;
+            let root = match dir {
+                Some(dir) => dir,
+                None => {
+                    fixtures::stage()?;
+                    serve::web_root()
+                }
+            };
+            serve::serve_forever(root, port)?;
+        }
+        "dist" => {
+            let dir = match rest {
+                [] => dist::default_dir(),
+                [dir] if !dir.starts_with('-') => PathBuf::from(dir),
+                _ => return Err(format!("dist: unexpected arguments {rest:?}").into()),
+            };
+            dist::build(&dir)?;
         }
         "test" => {
             if !rest.is_empty() {

@@ -1,9 +1,11 @@
-//! A static file server for `web/` (oxhttp): `cargo xtask serve`, the end of
-//! `cargo xtask demo`, and the e2e tests' server on a free port.
+//! A plain static file server (oxhttp): `cargo xtask serve` (of `web/`), the end of
+//! `cargo xtask demo`, and the e2e tests' server on a free port (of the folder that holds the
+//! `dist` folder, so the page is tested under a sub-path, as a static host serves it).
 //!
-//! It serves files only: `GET`, no directory listings, nothing outside `web/`, no caching (a
-//! rebuilt wasm is picked up by a reload), and `.wasm` as `application/wasm` so browsers can
-//! compile it while it streams.
+//! It serves files only and nothing a static host does not: `GET`, a folder's `index.html`
+//! (and `/rtnav` → `/rtnav/`, as static hosts redirect), no directory listings, nothing
+//! outside its folder, no caching (a rebuilt wasm is picked up by a reload), and `.wasm` as
+//! `application/wasm` so browsers can compile it while it streams.
 //!
 //! Why oxhttp, not tiny_http: tiny_http 0.12 hands each connection to a thread pool that can
 //! queue a connection behind busy keep-alive connections when a browser opens several at once;
@@ -16,7 +18,7 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use oxhttp::Server;
-use oxhttp::model::header::{CACHE_CONTROL, CONTENT_TYPE};
+use oxhttp::model::header::{CACHE_CONTROL, CONTENT_TYPE, LOCATION};
 use oxhttp::model::{Body, Method, Request, Response, StatusCode};
 
 use crate::Result;
@@ -27,10 +29,10 @@ pub fn web_root() -> PathBuf {
     tools::repo_root().join("web")
 }
 
-/// Serves `web/` on `127.0.0.1:port` until the process is stopped.
-pub fn serve_forever(port: u16) -> Result {
-    let root = web_root();
+/// Serves `root` on `127.0.0.1:port` until the process is stopped.
+pub fn serve_forever(root: PathBuf, port: u16) -> Result {
     let address = SocketAddr::from((Ipv4Addr::LOCALHOST, port));
+    let shown = root.clone();
     let server = Server::new(move |request| respond(&root, request))
         .bind(address)
         .with_global_timeout(Duration::from_secs(60))
@@ -44,14 +46,14 @@ pub fn serve_forever(port: u16) -> Result {
         })?;
     println!(
         "\nrtnav demo: http://{address}/  (serving {}; Ctrl-C to stop)\n",
-        web_root().display()
+        shown.display()
     );
     server.join()?;
     Ok(())
 }
 
-/// `cargo xtask serve` on a free port, as a child process (so it can be stopped), for the
-/// e2e tests. Dropping it stops the server.
+/// `cargo xtask serve --dir DIR` on a free port, as a child process (so it can be stopped),
+/// for the e2e tests. Dropping it stops the server.
 #[derive(Debug)]
 pub struct Background {
     child: Child,
@@ -60,13 +62,14 @@ pub struct Background {
 }
 
 impl Background {
-    /// Starts serving `web/` on a port the OS picks and waits until it accepts connections.
-    pub fn start() -> Result<Self> {
+    /// Starts serving `dir` on a port the OS picks and waits until it accepts connections.
+    pub fn start(dir: &Path) -> Result<Self> {
         let port = TcpListener::bind((Ipv4Addr::LOCALHOST, 0))?
             .local_addr()?
             .port();
         let child = Command::new(std::env::current_exe()?)
-            .args(["serve", "--port", &port.to_string()])
+            .args(["serve", "--port", &port.to_string(), "--dir"])
+            .arg(dir)
             .stdin(Stdio::null())
             .stdout(Stdio::null())
             .spawn()?;
@@ -143,6 +146,16 @@ fn respond(root: &Path, request: &mut Request<Body>) -> Response<Body> {
     if request.method() != Method::GET {
         eprintln!("serve: 405 {} {path}", request.method());
         return status(StatusCode::METHOD_NOT_ALLOWED, "only GET");
+    }
+    // A folder without its slash: relative URLs in its page need it.
+    if !path.ends_with('/')
+        && resolve(root, path).is_some_and(|_| root.join(path.trim_start_matches('/')).is_dir())
+    {
+        return Response::builder()
+            .status(StatusCode::MOVED_PERMANENTLY)
+            .header(LOCATION, format!("{path}/"))
+            .body(Body::empty())
+            .unwrap_or_else(|_| status(StatusCode::INTERNAL_SERVER_ERROR, "bad header"));
     }
     let Some(file) = resolve(root, path) else {
         eprintln!("serve: 404 GET {path}");

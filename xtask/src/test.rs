@@ -11,12 +11,12 @@ use std::time::{Duration, Instant};
 use crate::Result;
 use crate::serve::Background;
 use crate::tools::{self, cargo, cmd, run};
-use crate::wasm;
+use crate::{dist, wasm};
 
-/// A named check.
+/// A named check. It may return a note for the summary (e.g. the wasm's size).
 struct Stage {
     name: &'static str,
-    run: fn() -> Result,
+    run: fn() -> Result<Option<String>>,
 }
 
 const STAGES: &[Stage] = &[
@@ -45,7 +45,11 @@ const STAGES: &[Stage] = &[
         run: wasm_tests,
     },
     Stage {
-        name: "browser end-to-end",
+        name: "the page: wasm build, dist folder",
+        run: page,
+    },
+    Stage {
+        name: "browser end-to-end (dist under /rtnav/)",
         run: e2e,
     },
 ];
@@ -53,7 +57,7 @@ const STAGES: &[Stage] = &[
 /// Runs every stage and prints the summary.
 pub fn run_all() -> ExitCode {
     let started = Instant::now();
-    let mut results: Vec<(&str, Duration, Result)> = Vec::new();
+    let mut results: Vec<(&str, Duration, Result<Option<String>>)> = Vec::new();
     for (i, stage) in STAGES.iter().enumerate() {
         println!("\n==> [{}/{}] {}", i + 1, STAGES.len(), stage.name);
         let t = Instant::now();
@@ -67,6 +71,9 @@ pub fn run_all() -> ExitCode {
     for (name, took, r) in &results {
         let verdict = if r.is_ok() { "ok" } else { "FAILED" };
         println!("  {verdict:<7}{:>7.1} s  {name}", took.as_secs_f64());
+        if let Ok(Some(note)) = r {
+            println!("  {:>16}{note}", "");
+        }
     }
     let failed: Vec<&str> = results
         .iter()
@@ -83,11 +90,12 @@ pub fn run_all() -> ExitCode {
     }
 }
 
-fn cargo_test() -> Result {
-    run(cargo().args(["test", "--workspace"]))
+fn cargo_test() -> Result<Option<String>> {
+    run(cargo().args(["test", "--workspace"]))?;
+    Ok(None)
 }
 
-fn clippy_native() -> Result {
+fn clippy_native() -> Result<Option<String>> {
     run(cargo().args([
         "clippy",
         "--workspace",
@@ -95,10 +103,11 @@ fn clippy_native() -> Result {
         "--",
         "-D",
         "warnings",
-    ]))
+    ]))?;
+    Ok(None)
 }
 
-fn clippy_wasm() -> Result {
+fn clippy_wasm() -> Result<Option<String>> {
     tools::ensure_wasm_target()?;
     run(cargo().args([
         "clippy",
@@ -113,17 +122,21 @@ fn clippy_wasm() -> Result {
         "--",
         "-D",
         "warnings",
-    ]))
+    ]))?;
+    Ok(None)
 }
 
-fn fmt_check() -> Result {
-    run(cargo().args(["fmt", "--all", "--", "--check"]))
+fn fmt_check() -> Result<Option<String>> {
+    run(cargo().args(["fmt", "--all", "--", "--check"]))?;
+    Ok(None)
 }
 
-/// `rtnav-tests` compiled to wasm32 and run by `wasm-bindgen-test-runner` under Node.
-fn wasm_tests() -> Result {
+/// `rtnav-tests` compiled to wasm32 and run by `wasm-bindgen-test-runner` under Node (which
+/// gets our environment: `RTNAV_DATA` reaches the tests that read the external data).
+fn wasm_tests() -> Result<Option<String>> {
     tools::ensure_wasm_target()?;
     tools::ensure_wasm_bindgen_cli()?;
+    tools::ensure_node()?;
     run(cargo()
         .args([
             "test",
@@ -135,15 +148,35 @@ fn wasm_tests() -> Result {
         .env(
             "CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER",
             "wasm-bindgen-test-runner",
-        ))
+        ))?;
+    Ok(None)
+}
+
+/// Where the e2e stage's static site is: the dist folder at `rtnav/` inside it, so the page
+/// is served under a sub-path.
+fn e2e_site() -> PathBuf {
+    tools::target_dir().join("e2e-site")
+}
+
+/// The sub-path the e2e tests open the page at.
+const E2E_SUB_PATH: &str = "rtnav";
+
+/// The page's wasm (release: the `web` profile and wasm-opt), and the dist folder made from
+/// it, which the e2e stage serves. The note is the module's size.
+fn page() -> Result<Option<String>> {
+    let built = wasm::build_pkg(wasm::Profile::Release)?;
+    dist::assemble(&e2e_site().join(E2E_SUB_PATH))?;
+    Ok(Some(built.to_string()))
 }
 
 fn e2e_dir() -> PathBuf {
     tools::repo_root().join("tests").join("e2e")
 }
 
-/// Chromium (Debian's, driven by `playwright-core`) against the page served from `web/`.
-fn e2e() -> Result {
+/// Chromium (Debian's, driven by `playwright-core`) against the dist folder of the page stage,
+/// served by a plain static server under `/rtnav/`; the native runner built by the test
+/// stage answers the tests that compare the page with the core.
+fn e2e() -> Result<Option<String>> {
     tools::ensure_node()?;
     tools::ensure_chromium()?;
     // The lockfile pins playwright-core; it must never download a browser of its own.
@@ -151,16 +184,24 @@ fn e2e() -> Result {
         .args(["ci", "--no-audit", "--no-fund"])
         .current_dir(e2e_dir())
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))?;
-    wasm::build(wasm::Profile::Release)?;
-    // The native runner, for tests that compare the page's numbers with the core's.
-    run(cargo().args(["build", "-q", "-p", "rtnav-cli"]))?;
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map_or_else(|| tools::repo_root().join("target"), PathBuf::from);
-    let cli = target
+    let site = e2e_site();
+    if !site.join(E2E_SUB_PATH).join("index.html").is_file() {
+        return Err("no dist folder to test: the page stage did not make one".into());
+    }
+    let cli = tools::target_dir()
         .join("debug")
         .join(format!("rtnav{}", std::env::consts::EXE_SUFFIX));
-    let server = Background::start()?;
-    println!("xtask: serving web/ at {}", server.url);
+    if !cli.is_file() {
+        // Made by `cargo test --workspace` (the CLI's integration tests need it); built here
+        // only when that stage did not get so far.
+        run(cargo().args(["build", "-q", "-p", "rtnav-cli"]))?;
+    }
+    let server = Background::start(&site)?;
+    let url = format!("{}{E2E_SUB_PATH}/", server.url);
+    println!(
+        "xtask: serving {} at {url}",
+        site.join(E2E_SUB_PATH).display()
+    );
     let mut tests: Vec<PathBuf> = std::fs::read_dir(e2e_dir())?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.to_string_lossy().ends_with(".test.mjs"))
@@ -173,10 +214,10 @@ fn e2e() -> Result {
         .arg("--test")
         .args(&tests)
         .current_dir(e2e_dir())
-        .env("RTNAV_URL", &server.url)
+        .env("RTNAV_URL", &url)
         .env("RTNAV_CLI", &cli)
         .env("RTNAV_CHROMIUM", tools::CHROMIUM)
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"));
     drop(server);
-    result
+    result.map(|()| None)
 }

@@ -2,7 +2,7 @@
 //!
 //! Every `ensure_*` function checks first and installs only what is missing or has the wrong
 //! version, so running a command twice does no work the second time. Sources: rustup, crates.io
-//! (`cargo install`), Debian (`apt-get`) and npm; never GitHub.
+//! (`cargo install`), Debian (`apt-get`) and npm (from lockfiles); never GitHub.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -10,10 +10,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use crate::Result;
 
-/// `wasm-pack`'s version, pinned so every machine builds the same way.
-const WASM_PACK_VERSION: &str = "0.15.1";
-/// The oldest Node that `playwright-core` (tests/e2e) supports.
-const MIN_NODE_MAJOR: u32 = 20;
+/// The oldest Node that `playwright-core` (tests/e2e) supports and that has
+/// `process.getBuiltinModule` (the wasm tests read the external data through it).
+const MIN_NODE: (u32, u32) = (20, 16);
 /// The browser the end-to-end tests drive (Debian's `chromium`).
 pub const CHROMIUM: &str = "/usr/bin/chromium";
 
@@ -159,9 +158,60 @@ pub fn ensure_wasm_bindgen_cli() -> Result {
     ensure_cargo_tool("wasm-bindgen", "wasm-bindgen-cli", &pinned_wasm_bindgen()?)
 }
 
-/// `wasm-pack` at [`WASM_PACK_VERSION`].
-pub fn ensure_wasm_pack() -> Result {
-    ensure_cargo_tool("wasm-pack", "wasm-pack", WASM_PACK_VERSION)
+/// Where cargo builds: `$CARGO_TARGET_DIR`, else `target/` in the repository.
+pub fn target_dir() -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| repo_root().join("target"), PathBuf::from)
+}
+
+/// The folder of the npm tools `cargo xtask` runs (`package.json` and its lockfile).
+fn npm_tools_dir() -> PathBuf {
+    repo_root().join("xtask").join("npm")
+}
+
+/// The version of `package` pinned in `xtask/npm/package.json`'s devDependencies.
+fn npm_pinned(package: &str) -> Result<String> {
+    let path = npm_tools_dir().join("package.json");
+    let manifest: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path)?)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    manifest["devDependencies"][package]
+        .as_str()
+        .map(str::to_owned)
+        .ok_or_else(|| format!("{}: no devDependency `{package}`", path.display()).into())
+}
+
+/// binaryen's `wasm-opt` from npm (the `binaryen` package at the version pinned in
+/// `xtask/npm/package.json`, installed from its lockfile with `npm ci` unless
+/// `wasm-opt --version` already says that version). Debian's binaryen 108 cannot be used: it
+/// breaks wasm-bindgen 0.2.130's externref table. Returns the program's path.
+pub fn ensure_wasm_opt() -> Result<PathBuf> {
+    let dir = npm_tools_dir();
+    let program = dir.join("node_modules").join(".bin").join("wasm-opt");
+    let major = npm_pinned("binaryen")?
+        .split('.')
+        .next()
+        .unwrap_or_default()
+        .to_owned();
+    let wanted = format!("wasm-opt version {major} ");
+    let have = output_of(&program.to_string_lossy(), &["--version"]);
+    if have.as_deref().is_some_and(|v| v.starts_with(&wanted)) {
+        return Ok(program);
+    }
+    ensure_node()?;
+    println!(
+        "xtask: installing binaryen {major} (wasm-opt) from npm into {}",
+        dir.display()
+    );
+    run(cmd("npm")
+        .args(["ci", "--no-audit", "--no-fund"])
+        .current_dir(&dir))?;
+    match output_of(&program.to_string_lossy(), &["--version"]) {
+        Some(v) if v.starts_with(&wanted) => Ok(program),
+        other => Err(format!(
+            "{} says {other:?} after `npm ci`, expected binaryen {major}",
+            program.display()
+        )
+        .into()),
+    }
 }
 
 static APT_UPDATED: AtomicBool = AtomicBool::new(false);
@@ -210,14 +260,16 @@ pub fn ensure_chromium() -> Result {
 /// Checks that `node` and `npm` are there and Node is new enough.
 pub fn ensure_node() -> Result {
     let version = output_of("node", &["--version"]).ok_or("`node` not found: install Node.js")?;
-    let major = version
+    let mut parts = version
         .trim_start_matches('v')
         .split('.')
-        .next()
-        .and_then(|m| m.parse::<u32>().ok())
-        .ok_or_else(|| format!("cannot read Node's version `{version}`"))?;
-    if major < MIN_NODE_MAJOR {
-        return Err(format!("Node {version} is too old: need {MIN_NODE_MAJOR} or newer").into());
+        .map(|m| m.parse::<u32>().ok());
+    let (Some(Some(major)), Some(Some(minor))) = (parts.next(), parts.next()) else {
+        return Err(format!("cannot read Node's version `{version}`").into());
+    };
+    if (major, minor) < MIN_NODE {
+        let (a, b) = MIN_NODE;
+        return Err(format!("Node {version} is too old: need {a}.{b} or newer").into());
     }
     output_of("npm", &["--version"]).ok_or("`npm` not found: install npm")?;
     Ok(())

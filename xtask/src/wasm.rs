@@ -1,56 +1,228 @@
 //! `cargo xtask build-wasm`: `rtnav-wasm` → `web/pkg/` (`rtnav_wasm.js` + `rtnav_wasm_bg.wasm`),
 //! then the scenario fixtures → `web/fixtures/` (`crate::fixtures`).
 //!
-//! `wasm-pack` runs with `--mode no-install`, so it uses the `wasm-bindgen` we installed and
-//! never downloads one. Its `wasm-opt` step is off (`wasm/Cargo.toml`): it would download
-//! binaryen from GitHub, and Debian's binaryen (108, bookworm) is too old for wasm-bindgen
-//! 0.2.130's output — even a plain `wasm-opt in.wasm -o out.wasm` round trip breaks the
-//! externref table (`WebAssembly.Table.set(): Argument 1 is invalid for table` at start-up).
-//! The module is used as rustc and wasm-bindgen leave it (release: ~170 KB; `wasm-opt -Oz`
-//! would save ~20%).
+//! Three steps, each a tool we pin:
+//!
+//! 1. `cargo build -p rtnav-wasm --target wasm32-unknown-unknown --profile web`: the `web`
+//!    profile of the root `Cargo.toml` (fat LTO, one codegen unit, no debug info, opt-level 3,
+//!    which measured about twice as fast per frame as "s");
+//! 2. `wasm-bindgen --target web` (the CLI at the version pinned in `Cargo.toml`), which also
+//!    drops the debug sections and the name section;
+//! 3. binaryen's `wasm-opt` from npm (`xtask/npm`, pinned, from its lockfile), with the
+//!    features rustc's wasm32 output uses. Debian's binaryen 108 cannot be used: even a plain
+//!    round trip through it breaks wasm-bindgen 0.2.130's externref table
+//!    (`WebAssembly.Table.set(): Argument 1 is invalid for table` at start-up).
+//!
+//! No `wasm-pack`: it would only run steps 1 and 2 (and download a binaryen from GitHub for
+//! step 3), and installing it cost CI several minutes. Each build prints the module's raw and
+//! gzipped size.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use crate::Result;
-use crate::tools::{self, cmd, run};
+use crate::tools::{self, cargo, cmd, run};
 
 /// How to build.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Profile {
-    /// Optimised: what the demo and the e2e tests use.
+    /// The `web` profile, then `wasm-opt`: what the demo, `dist` and the e2e tests use.
     Release,
-    /// Unoptimised, with debug info; quicker to build.
+    /// The `dev` profile (debug info kept), no `wasm-opt`: quicker to build.
     Dev,
 }
+
+impl Profile {
+    /// The cargo profile's name.
+    fn cargo_profile(self) -> &'static str {
+        match self {
+            Profile::Release => "web",
+            Profile::Dev => "dev",
+        }
+    }
+
+    /// The folder of `target/wasm32-unknown-unknown/` the profile builds into.
+    fn target_subdir(self) -> &'static str {
+        match self {
+            Profile::Release => "web",
+            Profile::Dev => "debug",
+        }
+    }
+}
+
+/// The features rustc's wasm32-unknown-unknown output uses (its default target features
+/// since Rust 1.82, and what wasm-bindgen's externref table needs); binaryen must accept
+/// them all, and must not add any a browser of the project's baseline lacks.
+const WASM_OPT_FEATURES: &[&str] = &[
+    "--enable-bulk-memory",
+    "--enable-mutable-globals",
+    "--enable-nontrapping-float-to-int",
+    "--enable-reference-types",
+    "--enable-sign-ext",
+    "--enable-multivalue",
+];
+
+/// `wasm-opt`'s optimisation level: for speed, as the cargo profile (`-Oz`, `-Os` and `-O2`
+/// make the module smaller but compress no better: see the README).
+const WASM_OPT_LEVEL: &str = "-O3";
 
 /// Where the page loads the module from (git-ignored).
 pub fn pkg_dir() -> PathBuf {
     tools::repo_root().join("web").join("pkg")
 }
 
-/// Installs what is missing, then builds the wasm package into `web/pkg`.
-pub fn build(profile: Profile) -> Result {
+/// The module in [`pkg_dir`].
+pub fn module_path() -> PathBuf {
+    pkg_dir().join("rtnav_wasm_bg.wasm")
+}
+
+/// The JavaScript glue in [`pkg_dir`].
+pub fn glue_path() -> PathBuf {
+    pkg_dir().join("rtnav_wasm.js")
+}
+
+/// A module's size: raw and gzipped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Size {
+    /// Bytes.
+    pub raw: usize,
+    /// Bytes after gzip at level 9 (a 10-byte header, the deflate stream, an 8-byte trailer).
+    pub gzip: usize,
+}
+
+impl Size {
+    /// The size of `bytes`.
+    pub fn of(bytes: &[u8]) -> Self {
+        let deflated = miniz_oxide::deflate::compress_to_vec(bytes, 9);
+        Self {
+            raw: bytes.len(),
+            gzip: deflated.len() + 18,
+        }
+    }
+}
+
+impl std::fmt::Display for Size {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let kb = |b: usize| b as f64 / 1000.0;
+        write!(
+            f,
+            "{:.0} KB ({:.0} KB gzipped)",
+            kb(self.raw),
+            kb(self.gzip)
+        )
+    }
+}
+
+/// What a build made.
+#[derive(Debug, Clone, Copy)]
+pub struct Built {
+    /// `rtnav_wasm_bg.wasm`.
+    pub module: Size,
+    /// `rtnav_wasm.js`.
+    pub glue: Size,
+}
+
+impl std::fmt::Display for Built {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "wasm {}, JS glue {}", self.module, self.glue)
+    }
+}
+
+/// Installs what is missing, builds the wasm package into `web/pkg` and stages the fixtures.
+pub fn build(profile: Profile) -> Result<Built> {
+    let built = build_pkg(profile)?;
+    crate::fixtures::stage()?;
+    Ok(built)
+}
+
+/// The package alone: `web/pkg`, with its sizes printed.
+pub fn build_pkg(profile: Profile) -> Result<Built> {
     tools::ensure_wasm_target()?;
     tools::ensure_wasm_bindgen_cli()?;
-    tools::ensure_wasm_pack()?;
-    let out = pkg_dir();
-    let mut c = cmd("wasm-pack");
-    c.args([
+    let wasm_opt = match profile {
+        Profile::Release => Some(tools::ensure_wasm_opt()?),
+        Profile::Dev => None,
+    };
+    run(cargo().args([
         "build",
-        "wasm",
-        "--mode",
-        "no-install",
+        "-p",
+        "rtnav-wasm",
+        "--lib",
         "--target",
-        "web",
-        "--no-pack",
-    ])
-    .arg("--out-dir")
-    .arg(&out)
-    .arg(match profile {
-        Profile::Release => "--release",
-        Profile::Dev => "--dev",
-    });
-    run(&mut c)?;
-    println!("xtask: built {}", out.display());
-    crate::fixtures::stage()
+        "wasm32-unknown-unknown",
+        "--profile",
+        profile.cargo_profile(),
+    ]))?;
+    let input = tools::target_dir()
+        .join("wasm32-unknown-unknown")
+        .join(profile.target_subdir())
+        .join("rtnav_wasm.wasm");
+    let out = pkg_dir();
+    if out.exists() {
+        std::fs::remove_dir_all(&out)?;
+    }
+    let mut bindgen = cmd("wasm-bindgen");
+    bindgen
+        .args(["--target", "web", "--no-typescript", "--out-dir"])
+        .arg(&out);
+    if profile == Profile::Release {
+        bindgen.args(["--remove-name-section", "--remove-producers-section"]);
+    } else {
+        bindgen.arg("--keep-debug");
+    }
+    run(bindgen.arg(&input))?;
+    let module = module_path();
+    if let Some(wasm_opt) = wasm_opt {
+        optimise(&wasm_opt, &module)?;
+    }
+    let built = Built {
+        module: Size::of(&std::fs::read(&module)?),
+        glue: Size::of(&std::fs::read(glue_path())?),
+    };
+    println!(
+        "xtask: built {} ({} profile): {built}",
+        out.display(),
+        profile.cargo_profile()
+    );
+    Ok(built)
+}
+
+/// `wasm-opt` in place, with [`WASM_OPT_FEATURES`] and nothing but them.
+fn optimise(wasm_opt: &Path, module: &Path) -> Result {
+    let before = Size::of(&std::fs::read(module)?);
+    let tmp = module.with_extension("opt.wasm");
+    run(cmd(&wasm_opt.to_string_lossy())
+        .arg(WASM_OPT_LEVEL)
+        .arg("--mvp-features")
+        .args(WASM_OPT_FEATURES)
+        .args(["--strip-debug", "--strip-producers"])
+        .arg(module)
+        .arg("-o")
+        .arg(&tmp))?;
+    std::fs::rename(&tmp, module)?;
+    println!(
+        "xtask: wasm-opt {WASM_OPT_LEVEL}: {before} → {}",
+        Size::of(&std::fs::read(module)?)
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gzip_size_is_the_deflate_stream_and_its_framing() {
+        let zeros = vec![0u8; 100_000];
+        let s = Size::of(&zeros);
+        assert_eq!(s.raw, 100_000);
+        assert!(s.gzip > 18 && s.gzip < 1000, "{s:?}");
+        assert_eq!(
+            Size {
+                raw: 2_750_000,
+                gzip: 949_000
+            }
+            .to_string(),
+            "2750 KB (949 KB gzipped)"
+        );
+    }
 }

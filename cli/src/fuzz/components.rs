@@ -8,11 +8,11 @@
 //! ports last sent.
 
 use rtnav::components::{
-    DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapMaintenance, MapUpdate,
+    DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapMaintenance,
     MotorControl, PhysicsSim,
 };
 use rtnav::interfaces::{ControlPoints, Direction, GlobalPathCourse, Pose};
-use rtnav::map::GridMap;
+use rtnav::map::{GridMap, MapUpdate};
 use rtnav::motion::PhysicsParams;
 use rtnav::rtc::{
     Component, ConfigAccess, InPort, Tick, Time, TimedDouble, TimedDoubleSeq, TimedPosition,
@@ -144,6 +144,18 @@ fn cells(b: &mut Bytes<'_>, w: i64, h: i64) -> (Vec<i32>, Vec<i32>, Vec<i16>, i3
     (x, y, v, num)
 }
 
+/// A `MapUpdate` of hostile cells ([`cells`]) and a hostile timestamp ([`time`]).
+fn update(b: &mut Bytes<'_>) -> MapUpdate {
+    let (x, y, value, num) = cells(b, 20, 12);
+    MapUpdate {
+        x,
+        y,
+        value,
+        num,
+        tm: time(b, 0),
+    }
+}
+
 /// A parameter change with a hostile value (by name from the component's own specs, or an
 /// unknown name), as a number or as text.
 fn param_op<C: 'static>(
@@ -240,15 +252,25 @@ impl Subject for Lpp {
                 )
             }
             1 => {
-                let (x, y, v, num) = cells(b, 20, 12);
-                let (sec, nsec) = if b.u8() < 220 {
-                    (1, 0)
+                let (x, y, value, num) = cells(b, 20, 12);
+                let tm = if b.u8() < 220 {
+                    Time { sec: 1, nsec: 0 }
                 } else {
-                    (b.u32(), b.u32())
+                    Time {
+                        sec: b.u32(),
+                        nsec: b.u32(),
+                    }
+                };
+                let u = MapUpdate {
+                    x,
+                    y,
+                    value,
+                    num,
+                    tm,
                 };
                 (
                     "MapUpdate",
-                    Box::new(move |s: &mut Self| ok(s.c.map_update(&x, &y, &v, num, sec, nsec))),
+                    Box::new(move |s: &mut Self| ok(s.c.map_update(&u))),
                 )
             }
             2 => {
@@ -409,11 +431,10 @@ impl Subject for Gpp {
                 )
             }
             1 => {
-                let (x, y, v, num) = cells(b, 20, 12);
-                let tm = time(b, 0);
+                let u = update(b);
                 (
                     "MapUpdate",
-                    Box::new(move |s: &mut Self| ok(s.c.map_update(&x, &y, &v, num, tm))),
+                    Box::new(move |s: &mut Self| ok(s.c.map_update(&u))),
                 )
             }
             2 => {
@@ -423,7 +444,11 @@ impl Subject for Gpp {
                 let g = b.f64_in(0.05, 1.0);
                 (
                     "SetMap",
-                    Box::new(move |s: &mut Self| ok(s.c.set_map_data(&data, lx, ly, g))),
+                    Box::new(move |s: &mut Self| {
+                        // `SetMap`'s data becomes a map only if it is valid (`GridMap` is
+                        // checked when built); the component takes the map.
+                        ok(GridMap::from_map_data(&data, lx, ly, g).map(|m| s.c.set_map(m)))
+                    }),
                 )
             }
             3 => (
@@ -718,11 +743,10 @@ impl Subject for Phys {
                 )
             }
             1 => {
-                let (x, y, v, num) = cells(b, 20, 12);
-                let tm = time(b, 0);
+                let u = update(b);
                 (
                     "MapUpdate",
-                    Box::new(move |s: &mut Self| ok(s.c.map_update(&x, &y, &v, num, tm))),
+                    Box::new(move |s: &mut Self| ok(s.c.map_update(&u))),
                 )
             }
             2 => (
@@ -776,6 +800,7 @@ struct Drive {
     c: DriveControl,
     t: u64,
     vel: InPort<TimedVelocity>,
+    stop: InPort<TimedDouble>,
 }
 
 impl Subject for Drive {
@@ -783,19 +808,43 @@ impl Subject for Drive {
         let mut c = DriveControl::default();
         let vel = InPort::new("velocity");
         c.target_velocity.connect(&vel);
+        let stop = InPort::new("safety stop");
+        c.safety_stop.connect(&stop);
         if let Some(cfg) = c.configuration() {
             cfg.apply_on_activation();
         }
         let _ = c.on_activated(&tick(0, 20_000_000));
-        Self { c, t: 0, vel }
+        Self { c, t: 0, vel, stop }
     }
 
     fn fingerprint(&self) -> String {
-        format!("{:?} {:?}", self.c, self.vel.peek())
+        format!("{:?} {:?} {:?}", self.c, self.vel.peek(), self.stop.peek())
     }
 
     fn decode(b: &mut Bytes<'_>) -> (&'static str, Op<Self>) {
-        match b.below(5) {
+        match b.below(8) {
+            // The map of the clearance check, its updates and the body's radius.
+            5 => (
+                "SetMap",
+                Box::new(|s: &mut Self| {
+                    s.c.set_map(small_map());
+                    None
+                }),
+            ),
+            6 => {
+                let u = update(b);
+                (
+                    "MapUpdate",
+                    Box::new(move |s: &mut Self| ok(s.c.map_update(&u))),
+                )
+            }
+            7 => {
+                let r = b.f64_in(0.0, 1.0);
+                (
+                    "radiusOfBodyArea",
+                    Box::new(move |s: &mut Self| ok(s.c.set_body_radius(r))),
+                )
+            }
             0 => (
                 "parameter",
                 param_op(
@@ -884,17 +933,7 @@ impl Subject for Maint {
     }
 
     fn decode(b: &mut Bytes<'_>) -> (&'static str, Op<Self>) {
-        let update = |b: &mut Bytes<'_>| {
-            let (x, y, value, num) = cells(b, 20, 12);
-            MapUpdate {
-                x,
-                y,
-                value,
-                num,
-                tm: time(b, 0),
-            }
-        };
-        match b.below(4) {
+        match b.below(3) {
             0 => {
                 let u = update(b);
                 (
@@ -902,19 +941,7 @@ impl Subject for Maint {
                     Box::new(move |s: &mut Self| ok(s.c.map_update(u.clone()))),
                 )
             }
-            1 => {
-                let u = update(b);
-                let at = if b.u8() < 200 {
-                    u64::from(b.u16()) * 1_000_000
-                } else {
-                    b.u64()
-                };
-                (
-                    "schedule",
-                    Box::new(move |s: &mut Self| ok(s.c.schedule(at, u.clone()))),
-                )
-            }
-            2 => (
+            1 => (
                 "SetMap",
                 Box::new(|s: &mut Self| {
                     s.c.set_map(small_map());

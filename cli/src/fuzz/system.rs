@@ -1,7 +1,7 @@
 //! Fuzz targets through the whole system's public API (one of the two files of the tools that
-//! use `System`; the soak is the other): the `.conf` bundle (`System::load_conf`), share
-//! tokens (`Session::decode_token`, `Session::apply_share`), hostile GUI calls and random
-//! lifecycle sequences.
+//! use `System`; the soak is the other): the `.conf` bundle (`Input::LoadConf`), share
+//! tokens (`Session::decode_token`, `Session::apply_share`), hostile requests — every
+//! [`Input`], through [`System::apply`] — and random lifecycle sequences.
 //!
 //! The calls are checked against a twin system: each operation goes to system A; if A refuses
 //! it (`Err`), B never gets it and the two must be identical at once ([`fingerprint`]); if A
@@ -16,13 +16,16 @@ use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use rtnav::components::{
     DriveControlParams, GlobalPathPlanningParams, LocalPathPlanningParams, LocalizationParams,
-    MapUpdate, MotorControlParams, PhysicsSimParams,
+    MotorControlParams, PhysicsSimParams,
 };
+use rtnav::errors::ConfigError;
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
-use rtnav::rtc::{ParamSpec, ParameterSet, Time};
+use rtnav::rtc::{ParamSpec, ParameterSet};
 use rtnav::system::{
-    CONF_BUNDLE_HEADER, ComponentKind, MemoryResolver, Rates, Scenario, Session, Setup, System,
+    BoxSpec, CONF_BUNDLE_HEADER, ComponentInfo, ComponentKind, DirectionSpec, Input,
+    MemoryResolver, PoseSpec, Rates, Scenario, ScenarioEvent, Session, Setup, System,
+    TOKEN_INFLATE_LIMIT, Timeline,
 };
 
 use super::{Bytes, Case, HOSTILE_F64, INTERESTING_NUMBERS, REFUSED, Target};
@@ -35,19 +38,15 @@ use crate::rng::Rng;
 pub fn fingerprint(s: &System) -> String {
     let mut out = String::new();
     let _ = write!(out, "t={} state={:?}", s.time_ns(), s.state());
-    for info in s.components() {
+    for info in ComponentInfo::all(s.wiring()) {
         let _ = write!(out, "\n{info:?}");
     }
     let _ = write!(
         out,
-        "\nrobot={:?} start={:?} goal={:?} dir={:?} halted={} arrived={} path={:?}\nstats={:?}",
+        "\nrobot={:?} status={:?}\nmission={:?}\nstats={:?}",
         s.robot_pose(),
-        s.start(),
-        s.goal(),
-        s.direction(),
-        s.is_halted(),
-        s.is_arrived(),
-        s.global_path(),
+        s.status(),
+        s.mission(),
         s.stats()
     );
     if let Some(map) = s.map() {
@@ -60,14 +59,15 @@ pub fn fingerprint(s: &System) -> String {
             crate::rng::name_hash(&String::from_utf8_lossy(map.cells()))
         );
     }
+    let record = s.record();
     let _ = write!(
         out,
         "\nrates={:?} events={} samples={} trace={}\n{}",
         s.rates(),
-        s.event_count(),
-        s.telemetry().total(),
-        s.telemetry().trace_hash(),
-        s.to_conf()
+        record.event_count(),
+        record.telemetry().total(),
+        record.telemetry().trace_hash(),
+        s.wiring().to_conf()
     );
     out
 }
@@ -140,7 +140,65 @@ fn ok<T>(r: rtnav::Result<T>) -> Outcome {
     Some(r.is_ok())
 }
 
-/// One operation decoded from `b`; `lifecycle` weights the lifecycle, faults and time.
+/// An operation that is one [`Input`], carried out by [`System::apply`].
+fn input(input: Input) -> (String, Op) {
+    (
+        format!("{input:?}"),
+        Box::new(move |sys| ok(sys.apply(&input))),
+    )
+}
+
+/// A value of the text forms a parameter may be written in, hostile or not.
+fn param_text(b: &mut Bytes<'_>) -> &'static str {
+    INTERESTING_NUMBERS[b.below(INTERESTING_NUMBERS.len())]
+}
+
+/// Hostile scenario events: times, boxes and cells anywhere (NaN, ±∞, huge).
+fn scenario_events(b: &mut Bytes<'_>) -> Vec<ScenarioEvent> {
+    (0..1 + b.below(4))
+        .map(|_| {
+            let at = b.f64_in(0.0, 2.0);
+            match b.below(4) {
+                0 => ScenarioEvent::MapUpdate {
+                    at,
+                    boxes: (0..b.length(2, 40))
+                        .map(|_| BoxSpec {
+                            x: [b.f64_in(-1.0, 13.0), b.f64_in(-1.0, 13.0)],
+                            y: [b.f64_in(-1.0, 9.0), b.f64_in(-1.0, 9.0)],
+                        })
+                        .collect(),
+                    cells: (0..b.length(3, 40))
+                        .map(|_| [b.i64_in(-1, 25), b.i64_in(-1, 17)])
+                        .collect(),
+                    value: if b.u8() < 240 {
+                        i16::from(b.u8() % 2)
+                    } else {
+                        b.u16() as i16
+                    },
+                },
+                1 => ScenarioEvent::Goal {
+                    at,
+                    goal: PoseSpec {
+                        x: b.f64_in(0.0, 12.0),
+                        y: b.f64_in(0.0, 8.0),
+                        heading_deg: b.f64_in(-200.0, 200.0),
+                    },
+                    direction: if b.u8() < 200 {
+                        DirectionSpec::Forward
+                    } else {
+                        DirectionSpec::Backward
+                    },
+                },
+                2 => ScenarioEvent::SafeMode { at },
+                _ => ScenarioEvent::Clear { at },
+            }
+        })
+        .collect()
+}
+
+/// One operation decoded from `b`; `lifecycle` weights the lifecycle, faults and time. Every
+/// request a person can make goes through [`Input`] and [`System::apply`]; the rest are the
+/// system's own calls (time, telemetry, the map loaded, a scenario's timeline).
 fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
     let choice = if lifecycle {
         *[8, 8, 8, 9, 9, 7, 6, 0, 1, 2, 4, 11, 5]
@@ -150,20 +208,15 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
         b.below(15)
     };
     match choice {
-        0 => {
-            let (s, g, d) = (pose(b), pose(b), direction(b));
-            (
-                format!("set_position({s:?}, {g:?}, {d:?})"),
-                Box::new(move |sys| ok(sys.set_position(s, g, d))),
-            )
-        }
-        1 => {
-            let (g, d) = (pose(b), direction(b));
-            (
-                format!("set_goal({g:?}, {d:?})"),
-                Box::new(move |sys| ok(sys.set_goal(g, d))),
-            )
-        }
+        0 => input(Input::SetPosition {
+            start: pose(b),
+            goal: pose(b),
+            direction: direction(b),
+        }),
+        1 => input(Input::SetGoal {
+            goal: pose(b),
+            direction: direction(b),
+        }),
         2 => {
             let n = b.length(5, 3000);
             let cells: Vec<(i64, i64, i16)> = (0..n)
@@ -179,46 +232,38 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
                     )
                 })
                 .collect();
-            (
-                format!("set_cells({} cells)", cells.len()),
-                Box::new(move |sys| ok(sys.set_cells(&cells))),
-            )
+            let (what, op) = input(Input::MapUpdate { cells });
+            (what.chars().take(120).collect(), op)
         }
-        3 => {
-            let g: Vec<f64> = (0..4).map(|_| b.f64_in(0.0, 20.0)).collect();
-            (
-                format!("set_pd_gain({g:?})"),
-                Box::new(move |sys| ok(sys.set_pd_gain(g[0], g[1], g[2], g[3]))),
-            )
-        }
+        3 => input(Input::SetPdGain {
+            p_l: b.f64_in(0.0, 20.0),
+            p_r: b.f64_in(0.0, 20.0),
+            d_l: b.f64_in(0.0, 20.0),
+            d_r: b.f64_in(0.0, 20.0),
+        }),
         4 => {
-            let k = kind(b);
-            let specs = specs_of(k);
+            let component = kind(b);
+            let specs = specs_of(component);
             let name = if !specs.is_empty() && b.u8() < 240 {
                 specs[b.below(specs.len())].name
             } else {
                 "NoSuchParameter"
             };
             if b.u8() < 200 {
-                let v = b.f64_in(-10.0, 200.0);
-                (
-                    format!("config_mut({k:?}).set({name}, {v:?})"),
-                    Box::new(move |sys| ok(set_param(sys, k, name, v))),
-                )
+                input(Input::SetParam {
+                    component,
+                    name: name.to_owned(),
+                    value: b.f64_in(-10.0, 200.0),
+                })
             } else {
-                let t = INTERESTING_NUMBERS[b.below(INTERESTING_NUMBERS.len())];
+                let t = param_text(b);
                 (
-                    format!("config_mut({k:?}).set_text({name}, {t:?})"),
-                    Box::new(move |sys| {
-                        ok(sys
-                            .config_mut(k)
-                            .and_then(|c| c.set_text(name, t).map_err(Into::into)))
-                    }),
+                    format!("set_param_text({component:?}, {name}, {t:?})"),
+                    Box::new(move |sys| ok(set_param_text(sys, component, name, t))),
                 )
             }
         }
         5 => {
-            let k = kind(b);
             let hz = if b.u8() < 128 {
                 *[
                     1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 250.0, 500.0, 1000.0, 3.0, 7.0,
@@ -228,13 +273,13 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
             } else {
                 HOSTILE_F64[b.below(HOSTILE_F64.len())]
             };
-            (
-                format!("set_rate({k:?}, {hz:?})"),
-                Box::new(move |sys| ok(sys.set_rate(k, hz))),
-            )
+            input(Input::SetRate {
+                component: kind(b),
+                hz,
+            })
         }
         6 => {
-            let k = if b.u8() < 200 {
+            let component = if b.u8() < 200 {
                 ComponentKind::Localization
             } else {
                 kind(b)
@@ -244,55 +289,30 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
                 .unwrap_or(&"");
             let n = if b.u8() < 200 { 4 } else { b.length(8, 4096) };
             let data: Vec<f64> = (0..n).map(|_| b.f64_in(-1.0, 12.0)).collect();
+            let (_, op) = input(Input::InjectInput {
+                component,
+                port: port.to_owned(),
+                data,
+            });
             (
-                format!("inject_input({k:?}, {port:?}, {} values)", data.len()),
-                Box::new(move |sys| ok(sys.inject_input(k, port, data.clone()))),
+                format!("InjectInput({component:?}, {port:?}, {n} values)"),
+                op,
             )
         }
-        7 => {
-            let k = kind(b);
-            (
-                format!("inject_fault({k:?})"),
-                Box::new(move |sys| ok(sys.inject_fault(k, "fuzz"))),
-            )
-        }
+        7 => input(Input::InjectFault {
+            component: kind(b),
+            reason: "fuzz".to_owned(),
+        }),
         8 => {
-            let k = kind(b);
-            match b.below(6) {
-                0 => (
-                    format!("activate({k:?})"),
-                    Box::new(move |sys| ok(sys.activate(k))),
-                ),
-                1 => (
-                    format!("deactivate({k:?})"),
-                    Box::new(move |sys| ok(sys.deactivate(k))),
-                ),
-                2 => (
-                    format!("reset({k:?})"),
-                    Box::new(move |sys| ok(sys.reset(k))),
-                ),
-                3 => (
-                    "activate_all".to_owned(),
-                    Box::new(|sys| {
-                        sys.activate_all();
-                        None
-                    }),
-                ),
-                4 => (
-                    "deactivate_all".to_owned(),
-                    Box::new(|sys| {
-                        sys.deactivate_all();
-                        None
-                    }),
-                ),
-                _ => (
-                    "reset_all".to_owned(),
-                    Box::new(|sys| {
-                        sys.reset_all();
-                        None
-                    }),
-                ),
-            }
+            let component = kind(b);
+            input(match b.below(6) {
+                0 => Input::Activate { component },
+                1 => Input::Deactivate { component },
+                2 => Input::Reset { component },
+                3 => Input::ActivateAll,
+                4 => Input::DeactivateAll,
+                _ => Input::ResetAll,
+            })
         }
         9 => {
             if b.u8() < 200 {
@@ -317,7 +337,7 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
                 } else {
                     (
                         format!("run_until({s:?})"),
-                        Box::new(move |sys| ok(sys.run_until(s, System::is_arrived))),
+                        Box::new(move |sys| ok(sys.run_until(s, |s| s.mission().is_arrived()))),
                     )
                 }
             }
@@ -325,32 +345,20 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
         10 => {
             let text = garbled_conf(b);
             (
-                format!("load_conf({} bytes)", text.len()),
-                Box::new(move |sys| ok(sys.load_conf(&text))),
+                format!("LoadConf({} bytes)", text.len()),
+                Box::new(move |sys| ok(sys.apply(&Input::LoadConf { text: text.clone() }))),
             )
         }
         11 => match b.below(3) {
-            0 => (
-                "clear".to_owned(),
-                Box::new(|sys| {
-                    sys.clear();
-                    None
-                }),
-            ),
-            1 => (
-                "safe_mode".to_owned(),
-                Box::new(|sys| {
-                    sys.safe_mode();
-                    None
-                }),
-            ),
-            _ => (
-                "request_replan".to_owned(),
-                Box::new(|sys| {
-                    sys.request_replan();
-                    None
-                }),
-            ),
+            0 => input(Input::Clear),
+            1 => input(Input::SafeMode),
+            _ => {
+                let capacity = *[0, 1, 2, 100, 65_536].get(b.below(5)).unwrap_or(&1);
+                (
+                    format!("set_telemetry_capacity({capacity})"),
+                    Box::new(move |sys| ok(sys.set_telemetry_capacity(capacity))),
+                )
+            }
         },
         12 => {
             let hz = if b.u8() < 128 {
@@ -364,27 +372,15 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
             )
         }
         13 => {
-            let n = b.length(4, 600);
-            let cells: Vec<(i64, i64, i16)> = (0..n)
-                .map(|_| (b.i64_in(-1, 25), b.i64_in(-1, 17), i16::from(b.u8() % 3)))
-                .collect();
-            let at = if b.u8() < 200 {
-                u64::from(b.u16()) * 1_000_000
-            } else {
-                b.u64()
-            };
-            let tm = if b.u8() < 220 {
-                Time::default()
-            } else {
-                Time {
-                    sec: b.u32(),
-                    nsec: b.u32(),
-                }
-            };
+            // A scenario's timed events with hostile values, run by the one interpreter of
+            // them (a refused event is logged, never an error).
+            let events = scenario_events(b);
+            let ticks = u64::from(b.u16() % 2500);
             (
-                format!("schedule_map_update({at}, {} cells, {tm:?})", cells.len()),
+                format!("timeline({events:?}, {ticks} ticks)"),
                 Box::new(move |sys| {
-                    ok(sys.schedule_map_update(at, MapUpdate::from_cells(&cells, tm)))
+                    Timeline::new(&events).run(sys, ticks);
+                    None
                 }),
             )
         }
@@ -411,16 +407,39 @@ fn specs_of(kind: ComponentKind) -> &'static [ParamSpec] {
     }
 }
 
-/// Sets a parameter through the system: the one place the tools change parameters
-/// (`config_mut` today; `System::set_param` once the lead adds it).
+/// Sets a parameter through the system ([`Input::SetParam`]).
 pub fn set_param(
     sys: &mut System,
-    kind: ComponentKind,
+    component: ComponentKind,
     name: &str,
     value: f64,
 ) -> rtnav::Result<()> {
-    sys.config_mut(kind)?.set(name, value)?;
-    Ok(())
+    sys.apply(&Input::SetParam {
+        component,
+        name: name.to_owned(),
+        value,
+    })
+}
+
+/// Sets a parameter from text, parsed by its declaration (as the page's text fields do),
+/// then through [`Input::SetParam`].
+pub fn set_param_text(
+    sys: &mut System,
+    component: ComponentKind,
+    name: &str,
+    text: &str,
+) -> rtnav::Result<()> {
+    let config = sys.wiring().config(component)?;
+    let spec = config
+        .specs()
+        .iter()
+        .find(|s| s.name == name)
+        .ok_or_else(|| ConfigError::UnknownParameter {
+            name: name.to_owned(),
+            line: None,
+        })?;
+    let value = spec.parse(text, None)?;
+    set_param(sys, component, name, value)
 }
 
 /// The `.conf` bundle of a fresh system (made once).
@@ -428,7 +447,7 @@ fn default_bundle() -> &'static str {
     static BUNDLE: OnceLock<String> = OnceLock::new();
     BUNDLE.get_or_init(|| {
         System::new(Rates::default())
-            .map(|s| s.to_conf())
+            .map(|s| s.wiring().to_conf())
             .unwrap_or_default()
     })
 }
@@ -470,11 +489,11 @@ struct Calls {
 fn fresh() -> Result<System, String> {
     let mut s = System::new(Rates::default()).map_err(|e| e.to_string())?;
     s.load_map(yard());
-    s.set_position(
-        Pose::new(2.25, 2.25, 0.0),
-        Pose::new(10.25, 3.25, 1.5),
-        Direction::Forward,
-    )
+    s.apply(&Input::SetPosition {
+        start: Pose::new(2.25, 2.25, 0.0),
+        goal: Pose::new(10.25, 3.25, 1.5),
+        direction: Direction::Forward,
+    })
     .map_err(|e| e.to_string())?;
     Ok(s)
 }
@@ -497,8 +516,8 @@ pub fn twin_calls(data: &[u8], lifecycle: bool) -> Result<(), String> {
 pub fn check_twins(active: bool, ops: &[(String, Op)]) -> Result<(), String> {
     let (mut a, mut b) = (fresh()?, fresh()?);
     if active {
-        a.activate_all();
-        b.activate_all();
+        a.apply(&Input::ActivateAll).map_err(|e| e.to_string())?;
+        b.apply(&Input::ActivateAll).map_err(|e| e.to_string())?;
     }
     for (n, (what, op)) in ops.iter().enumerate() {
         match op(&mut a) {
@@ -604,7 +623,7 @@ impl Target for Bundle {
         let text = case.text(0);
         let mut s = System::new(Rates::default()).map_err(|e| e.to_string())?;
         let before = fingerprint(&s);
-        match s.load_conf(&text) {
+        match s.apply(&Input::LoadConf { text }) {
             Err(_) => {
                 let after = fingerprint(&s);
                 if after != before {
@@ -616,10 +635,12 @@ impl Target for Bundle {
             }
             Ok(()) => {
                 // What was applied writes out and reads back to the same configuration.
-                let written = s.to_conf();
-                s.load_conf(&written)
-                    .map_err(|e| format!("the system's own bundle is refused: {e}"))?;
-                if s.to_conf() != written {
+                let written = s.wiring().to_conf();
+                s.apply(&Input::LoadConf {
+                    text: written.clone(),
+                })
+                .map_err(|e| format!("the system's own bundle is refused: {e}"))?;
+                if s.wiring().to_conf() != written {
                     return Err("the bundle written does not read back the same".to_owned());
                 }
             }
@@ -636,7 +657,7 @@ impl Target for Bundle {
 // ------------------------------------------------------------------ share tokens
 
 /// The limit `Session::decode_token` inflates to \[bytes\].
-const INFLATE_LIMIT: u64 = 1 << 24;
+const INFLATE_LIMIT: u64 = TOKEN_INFLATE_LIMIT as u64;
 
 struct Tokens {
     session: Session,
@@ -654,9 +675,13 @@ impl Tokens {
         let mut session = Session::new().ok()?;
         session.load_scenario(scenario, &files).ok()?;
         let mut seeds = vec![Case::one(session.share_token().ok()?)];
-        session.set_cells(&[(30, 30, 1), (31, 30, 1)]).ok()?;
         session
-            .set_param(ComponentKind::LocalPathPlanning, "dmin", "0.7")
+            .apply(&Input::MapUpdate {
+                cells: vec![(30, 30, 1), (31, 30, 1)],
+            })
+            .ok()?;
+        session
+            .set_param_text(ComponentKind::LocalPathPlanning, "dmin", "0.7")
             .ok()?;
         seeds.push(Case::one(session.share_token().ok()?));
         Some(Self { session, seeds })

@@ -1,4 +1,4 @@
-//! DriveControl (SPEC §5): follows LocalPathPlanning's control points and sends MotorControl
+//! DriveControl (spec §5): follows LocalPathPlanning's control points and sends MotorControl
 //! its `TargetVelocity`; tells LocalPathPlanning how far the robot is from the path
 //! (`OutDeviating` → `InDeviating`, 000 §3.1, §5.2.4.5).
 //!
@@ -6,29 +6,44 @@
 //! limits on speed, acceleration and turn rate, turning on the spot when the heading error is
 //! large, slowing to a stop at the goal and turning to the goal heading, and driving backward
 //! when the planner says so ([`crate::motion::PurePursuit`] has the details). Run it at 50 Hz
-//! (SPEC §6).
+//! (spec §6).
 //!
 //! Without a pose, with a non-finite pose or one whose timestamp has `nsec` ≥ 10⁹ (refused by
-//! [`crate::rtc::Time::checked`], SPEC §4 Decision 0.2), or with no new pose for 0.5 s it
+//! [`crate::rtc::Time::checked`], spec §4 Decision 0.2), or with no new pose for 0.5 s it
 //! sends zero velocity and reports why. Control points with such a timestamp are refused
 //! (the held path stays) and reported.
+//!
+//! **Clearance check (spec §5, Decision)**: the planners keep `dmin` between cell centres,
+//! and on a fine map that can leave the body (`radiusOfBodyArea`, told by the system)
+//! millimetres from an obstacle's square, less than tracking strays. Like Nav2's collision
+//! monitor, DriveControl therefore checks the commanded arc against the map
+//! ([`free_travel`]) every tick and limits the speed so the robot can stop `SafetyMargin`
+//! short of any contact. Where the arc is blocked it first turns on the spot towards the
+//! path; if the way ahead is still blocked it stops, says so
+//! ([`DriveStatus::SafetyStop`]), and asks for a new plan on its `SafetyStop` port (the
+//! system passes it to LocalPathPlanning, every second while it stands).
 
 use core::fmt;
 
 use crate::define_parameters;
 use crate::errors::MotionError;
 use crate::interfaces::{ControlPoints, Pose};
-use crate::motion::{DrivePhase, PurePursuit, PursuitParams};
+use crate::map::{GridMap, MapUpdate};
+use crate::motion::{DrivePhase, PurePursuit, PursuitParams, free_travel};
 use crate::rtc::{
     Component, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDouble,
     TimedPosition, TimedVelocity,
 };
 
-/// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, SPEC §4).
+/// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, spec §4).
 pub const POSE_TIMEOUT_NS: u64 = 500_000_000;
+/// While a safety stop lasts, how often a new plan is asked for \[ns\].
+pub const SAFETY_RETRY_NS: u64 = 1_000_000_000;
+/// Free travel below which the way ahead counts as blocked \[m\].
+const BLOCKED: f64 = 0.005;
 
 define_parameters! {
-    /// DriveControl's configuration parameters (SPEC §5: "limits on speed, acceleration and
+    /// DriveControl's configuration parameters (spec §5: "limits on speed, acceleration and
     /// turn rate"); all `always`.
     pub struct DriveControlParams {
         /// Largest speed.
@@ -63,6 +78,10 @@ define_parameters! {
         /// Turn rate per radian of heading error when turning on the spot.
         heading_gain: f64 = ("HeadingGain", "1/s", 2.0, 0.1, 50.0, Always,
             "turn rate per radian of heading error when turning on the spot"),
+        /// Clearance the body keeps from obstacles: the speed is limited so the robot can
+        /// stop this far short of any contact.
+        safety_margin: f64 = ("SafetyMargin", "m", 0.01, 0.0, 0.5, Always,
+            "clearance the body keeps from obstacles (the speed is limited to stop short of it)"),
     }
 }
 
@@ -95,6 +114,12 @@ pub enum DriveStatus {
     Driving(DrivePhase),
     /// Zero velocity because of this input problem.
     SafeStop(MotionError),
+    /// Stopped: the way ahead is blocked within this distance \[m\] of the body's margin
+    /// (the clearance check); a new plan has been asked for.
+    SafetyStop {
+        /// Free travel left along the commanded arc \[m\].
+        ahead: f64,
+    },
 }
 
 impl fmt::Display for DriveStatus {
@@ -108,8 +133,21 @@ impl fmt::Display for DriveStatus {
             Self::Driving(DrivePhase::FinalTurn) => f.write_str("turning to the goal heading"),
             Self::Driving(DrivePhase::Arrived) => f.write_str("arrived"),
             Self::SafeStop(e) => write!(f, "safe stop, zero velocity: {e}"),
+            Self::SafetyStop { ahead } => {
+                write!(
+                    f,
+                    "safety stop: obstacle {ahead:.2} m ahead, a new plan asked for"
+                )
+            }
         }
     }
+}
+
+/// The clearance check's state while the way ahead is blocked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Blocked {
+    turned: bool,
+    notified_ns: Option<u64>,
 }
 
 /// The DriveControl RT-component.
@@ -126,6 +164,16 @@ pub struct DriveControl {
     /// `OutDeviating` (out): distance from the robot to the polyline \[m\], for
     /// LocalPathPlanning's `InDeviating`.
     pub out_deviating: OutPort<TimedDouble>,
+    /// `SafetyStop` (out): the free travel left \[m\] when the clearance check stopped the
+    /// robot (the system asks LocalPathPlanning for a new plan).
+    pub safety_stop: OutPort<TimedDouble>,
+    map: Option<GridMap>,
+    body_radius: f64,
+    /// The way ahead is blocked: whether the robot has turned towards the path since, and
+    /// when the last notice went out \[ns\].
+    blocked: Option<Blocked>,
+    /// The speed limit of the clearance check this tick \[m/s\], if it limited.
+    limited: Option<f64>,
     pursuit: PurePursuit,
     pose: Option<(Pose, u64)>,
     pose_fault: Option<MotionError>,
@@ -150,6 +198,11 @@ impl DriveControl {
             in_current_position: InPort::new("InCurrentPosition"),
             target_velocity: OutPort::new("TargetVelocity"),
             out_deviating: OutPort::new("OutDeviating"),
+            safety_stop: OutPort::new("SafetyStop"),
+            map: None,
+            body_radius: 0.0,
+            blocked: None,
+            limited: None,
             pursuit: PurePursuit::new(),
             pose: None,
             pose_fault: None,
@@ -194,6 +247,98 @@ impl DriveControl {
         &self.pursuit
     }
 
+    /// `SetMap`: the map the clearance check uses.
+    pub fn set_map(&mut self, map: GridMap) {
+        self.map = Some(map);
+    }
+
+    /// `MapUpdate` on the held map (spec §2, atomic). Returns the cells changed.
+    pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
+        let map = self
+            .map
+            .as_mut()
+            .ok_or(MotionError::NoMap { what: "MapUpdate" })?;
+        Ok(map.map_update(update)?)
+    }
+
+    /// The robot's body radius (MotorControl's `radiusOfBodyArea`, 002 §4.2), which the
+    /// clearance check keeps off obstacles. Refused unless finite and ≥ 0.
+    pub fn set_body_radius(&mut self, radius: f64) -> Result<(), MotionError> {
+        if !(radius.is_finite() && radius >= 0.0) {
+            return Err(MotionError::BadParameter {
+                name: "radiusOfBodyArea".to_owned(),
+                value: radius,
+                reason: "must be finite and ≥ 0",
+            });
+        }
+        self.body_radius = radius;
+        Ok(())
+    }
+
+    /// The speed the clearance check allowed this tick \[m/s\], if it limited the command.
+    pub fn speed_limit(&self) -> Option<f64> {
+        self.limited
+    }
+
+    /// The clearance check (module documentation): limits `(v, ω)` so the robot can stop
+    /// short of any contact; turns on the spot or stops where the way is blocked.
+    fn check_clearance(&mut self, tick: &Tick, pose: Pose, v: f64, w: f64) -> (f64, f64) {
+        self.limited = None;
+        let Some(map) = self.map.as_ref() else {
+            return (v, w);
+        };
+        if v == 0.0 {
+            return (v, w);
+        }
+        let params = self.config.params();
+        let reach = params.max_velocity * params.max_velocity / params.max_acceleration + 0.05;
+        let free = free_travel(
+            map,
+            pose,
+            v.signum(),
+            w / v,
+            self.body_radius,
+            params.safety_margin,
+            reach,
+        );
+        // Braking at half the acceleration limit, as the path follower does towards stops.
+        let allowed = f64::sqrt(params.max_acceleration * free);
+        if v.abs() <= allowed {
+            self.blocked = None;
+            return (v, w);
+        }
+        self.limited = Some(allowed);
+        if free > BLOCKED {
+            self.blocked = None;
+            let k = allowed / v.abs();
+            self.pursuit.limit_command(v * k, w * k);
+            return (v * k, w * k);
+        }
+        // Blocked: turn towards the path first; if that does not free the way, stop and ask
+        // for a plan (again every second while it lasts).
+        let now = tick.time_ns;
+        let blocked = self.blocked.get_or_insert(Blocked {
+            turned: false,
+            notified_ns: None,
+        });
+        if !blocked.turned {
+            blocked.turned = true;
+            self.pursuit.turn_in_place();
+        } else if blocked
+            .notified_ns
+            .is_none_or(|at| now.saturating_sub(at) >= SAFETY_RETRY_NS)
+        {
+            blocked.notified_ns = Some(now);
+            self.safety_stop.write(TimedDouble {
+                tm: tick.tm(),
+                data: free,
+            });
+        }
+        self.status = DriveStatus::SafetyStop { ahead: free };
+        self.pursuit.limit_command(0.0, 0.0);
+        (0.0, 0.0)
+    }
+
     fn send(&mut self, tick: &Tick, v: f64, w: f64) {
         self.target_velocity.write(TimedVelocity {
             tm: tick.tm(),
@@ -213,7 +358,7 @@ impl DriveControl {
 }
 
 /// An `InCurrentPosition` sample checked: a valid timestamp ([`crate::rtc::Time::checked`],
-/// SPEC §4 Decision 0.2) and finite numbers.
+/// spec §4 Decision 0.2) and finite numbers.
 fn check_position(msg: &TimedPosition) -> Result<Pose, MotionError> {
     const PORT: &str = "InCurrentPosition";
     msg.tm.checked(PORT)?;
@@ -243,8 +388,13 @@ impl Component for DriveControl {
         Some(&self.config)
     }
 
+    /// Starts from standstill with the path it holds (a path that came on `InControlPoints`
+    /// is the component's data: a Reset and an Activate resume it; a newer one waiting on the
+    /// port replaces it at the first tick).
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
-        self.pursuit = PurePursuit::new();
+        self.pursuit.reset_command();
+        self.blocked = None;
+        self.limited = None;
         self.pose = None;
         self.pose_fault = None;
         self.last_error = None;
@@ -270,8 +420,10 @@ impl Component for DriveControl {
                 .checked("InControlPoints")
                 .map_err(MotionError::from)
                 .and_then(|_| self.pursuit.set_path(&cp));
-            if let Err(e) = accepted {
-                self.last_error = Some(e);
+            match accepted {
+                // A new path: the clearance check starts afresh.
+                Ok(()) => self.blocked = None,
+                Err(e) => self.last_error = Some(e),
             }
         }
         if self.in_current_position.is_new()
@@ -323,7 +475,8 @@ impl Component for DriveControl {
                         data: d,
                     });
                 }
-                self.send(tick, cmd.v, cmd.w);
+                let (v, w) = self.check_clearance(tick, pose, cmd.v, cmd.w);
+                self.send(tick, v, w);
             }
             Err(e) => {
                 self.last_error = Some(e.clone());

@@ -1,4 +1,4 @@
-//! Localization (SPEC §5): the robot pose as `TimedPosition`, from the simulated pose or from
+//! Localization (spec §5): the robot pose as `TimedPosition`, from the simulated pose or from
 //! wheel odometry, selectable so that odometry drift can be taught.
 //!
 //! Inputs are MotorControl's outputs: `InSimulatedPosition` ← `OutSimulatedPositionToLocalization`
@@ -12,8 +12,8 @@
 //! **Decision (faults, issue 7)**: a non-finite number on either input is a fault — the pose
 //! can no longer be trusted, and publishing it would send NaN on to the planners and
 //! DriveControl — so `on_execute` fails with the port and field named, and the component goes
-//! to Error (SPEC §1); the held pose stays and Reset recovers. A wrong length, a timestamp
-//! whose `nsec` is not below 10⁹ ([`crate::rtc::Time::checked`], SPEC §4 Decision 0.2) or
+//! to Error (spec §1); the held pose stays and Reset recovers. A wrong length, a timestamp
+//! whose `nsec` is not below 10⁹ ([`crate::rtc::Time::checked`], spec §4 Decision 0.2) or
 //! time not advancing is ignored and reported ([`Localization::last_error`]); the held pose stays.
 
 use crate::define_parameters;

@@ -1,4 +1,4 @@
-//! MapBuilder (SPEC §0, §5 "MapBuilder / MapMaintenance"): holds the loaded map and sends it
+//! MapBuilder (spec §0, §5 "MapBuilder / MapMaintenance"): holds the loaded map and sends it
 //! as `SetMap` to the components that need it.
 //!
 //! In OpenINVENT the map came from a MapBuilder component through the `SetMap` service of

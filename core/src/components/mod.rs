@@ -1,6 +1,5 @@
-//! The RT-components, one per file, named as in the seeds (SPEC §0).
+//! The RT-components, one per file, named as in the seeds (spec §0).
 
-// --- motion: MotorControl (002), the physics, DriveControl, Localization (SPEC §4, §5) ---
 mod drive_control;
 mod localization;
 mod motor_control;
@@ -13,21 +12,16 @@ pub use motor_control::{
 };
 pub use physics_sim::{PhysicsSim, PhysicsSimParams};
 
-// --- LocalPathPlanning (branch `local`) ---
 pub mod local_path_planning;
-pub use local_path_planning::{LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams};
+pub use local_path_planning::{
+    LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams, RETRY_NS,
+};
 
-// Demo component for the browser page until the robot system exists (tooling issue).
-pub mod heartbeat;
-pub use heartbeat::{Heartbeat, HeartbeatParams};
-
-// --- maps: GlobalPathPlanning ---
 mod global_path_planning;
-pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams};
+pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams, PlanReason};
 
-// --- system: MapBuilder / MapMaintenance (SPEC §5) ---
 mod map_builder;
 mod map_maintenance;
 
 pub use map_builder::{MapBuilder, SetMapMessage};
-pub use map_maintenance::{MapMaintenance, MapUpdate};
+pub use map_maintenance::MapMaintenance;

@@ -1,4 +1,4 @@
-//! MotorControl (seed 002, SPEC §4): wheel PD torque control of a differential-drive robot
+//! MotorControl (seed 002, spec §4): wheel PD torque control of a differential-drive robot
 //! in the simulator, and the simulated pose for Localization and the GUI.
 //!
 //! Each tick (002 §5.2.5): read the gains (`always`), the wheel angles (rates from angle
@@ -6,8 +6,8 @@
 //! and angles), compute the PD torques, convert the simulated pose, send everything, keep
 //! the current values as the previous ones.
 //!
-//! **Safe stop** (SPEC §4 Decision): a non-finite or wrong-length input, a timestamp whose
-//! `nsec` is not below 10⁹ (refused by [`Time::checked`], SPEC §4 Decision 0.2), time going
+//! **Safe stop** (spec §4 Decision): a non-finite or wrong-length input, a timestamp whose
+//! `nsec` is not below 10⁹ (refused by [`Time::checked`], spec §4 Decision 0.2), time going
 //! backwards (wheel angles must advance, Δt > 0; a target velocity may repeat its timestamp
 //! but not go back), or no new target velocity (or wheel angles) for 0.5 s gives zero torque
 //! and a reason ([`MotorControl::status`], [`MotorControl::last_error`]). The component keeps
@@ -26,7 +26,7 @@ use crate::rtc::{
 };
 
 /// How long without a new target velocity (or new wheel angles) before the safe stop:
-/// 0.5 s (SPEC §4 Decision).
+/// 0.5 s (spec §4 Decision).
 pub const INPUT_TIMEOUT_NS: u64 = 500_000_000;
 
 /// Largest accepted gain: the seed says "0.0以上"; the cap refuses an infinite gain.
@@ -94,7 +94,7 @@ pub enum MotorStatus {
     Stopped,
     /// `Finish` was called: zero torque until `Start`.
     Finished,
-    /// Zero torque because of this input problem (SPEC §4 Decision).
+    /// Zero torque because of this input problem (spec §4 Decision).
     SafeStop(MotionError),
 }
 
@@ -341,19 +341,19 @@ impl MotorControl {
         Ok(())
     }
 
-    /// `Start` (T.B.D. in the seed; SPEC §4 Decision): enables torque output and releases
+    /// `Start` (T.B.D. in the seed; spec §4 Decision): enables torque output and releases
     /// `Stop`.
     pub fn start(&mut self) {
         self.enabled = true;
         self.stopped = false;
     }
 
-    /// `Finish` (SPEC §4 Decision): disables torque output (zero torque) until `Start`.
+    /// `Finish` (spec §4 Decision): disables torque output (zero torque) until `Start`.
     pub fn finish(&mut self) {
         self.enabled = false;
     }
 
-    /// `Clear` (SPEC §4 Decision): drops the controller's held state — wheel angles and
+    /// `Clear` (spec §4 Decision): drops the controller's held state — wheel angles and
     /// rates, target velocity, input faults and the last error — as after activation.
     /// `Start`/`Finish`/`Stop` states stay.
     pub fn clear(&mut self) {
@@ -366,7 +366,7 @@ impl MotorControl {
         self.target_angles = [0.0; 2];
     }
 
-    /// `Stop` (from bump detection; SPEC §4 Decision): the target velocity is zero until the
+    /// `Stop` (from bump detection; spec §4 Decision): the target velocity is zero until the
     /// next `Start` (the wheels are braked by the PD law).
     pub fn stop(&mut self) {
         self.stopped = true;
@@ -442,7 +442,7 @@ impl MotorControl {
     }
 
     /// 002 §5.2.5.4: checks and keeps a target velocity (`vy` is ignored: a differential
-    /// drive cannot move sideways, SPEC §4).
+    /// drive cannot move sideways, spec §4).
     fn accept_target_velocity(&mut self, msg: &TimedVelocity, now: u64) -> Result<(), MotionError> {
         const PORT: &str = "TargetVelocity";
         let tm = msg.tm.checked(PORT)?;
@@ -500,7 +500,7 @@ impl MotorControl {
     }
 
     /// 002 §5.2.5.4–5: target rates and angles, and the PD torque
-    /// `P·(target angle − angle) + D·(target rate − rate)` (restoring sign, SPEC §4 Decision).
+    /// `P·(target angle − angle) + D·(target rate − rate)` (restoring sign, spec §4 Decision).
     fn control(&mut self, now: u64) -> [f64; 2] {
         if !self.enabled {
             self.status = MotorStatus::Finished;

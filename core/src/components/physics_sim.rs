@@ -1,11 +1,11 @@
 //! PhysicsSim: the physics as an RT-component, in place of OpenHRP3 and its
-//! ControllerBridge (SPEC §5 "Physics", 002 §5.2.7 `bridge.sh`).
+//! ControllerBridge (spec §5 "Physics", 002 §5.2.7 `bridge.sh`).
 //!
 //! Its ports carry the bridge's names and data: in `torque` (`JOINT_TORQUE`, `[left, right]`
 //! N·m), out `angle` (`JOINT_VALUE`, `[left, right]` rad) and `position`
 //! (`BODY:ABS_TRANSFORM`, `[X, Y, Z, A11..A33]` of the model origin, in the model frame of
 //! [`PhysicsParams`]). Connect them to MotorControl's `Torque`, `InCurrentWheelAngle` and
-//! `InSimulatedPosition`. A fourth port, `bump`, reports bumps (SPEC §5: "the robot stops;
+//! `InSimulatedPosition`. A fourth port, `bump`, reports bumps (spec §5: "the robot stops;
 //! the GUI shows it").
 //!
 //! Each tick it applies the newest torque (held between messages, as a simulator does) for
@@ -20,7 +20,7 @@
 use crate::define_parameters;
 use crate::errors::MotionError;
 use crate::interfaces::Pose;
-use crate::map::GridMap;
+use crate::map::{GridMap, MapUpdate};
 use crate::motion::{
     BumpReport, DEFAULT_MASS, DEFAULT_MAX_TORQUE, DEFAULT_VISCOUS_FRICTION, DEFAULT_YAW_INERTIA,
     Physics, PhysicsParams, STEP_NS,
@@ -31,26 +31,26 @@ use crate::rtc::{
 };
 
 define_parameters! {
-    /// PhysicsSim's configuration parameters: the dynamics of the robot model of SPEC §5
+    /// PhysicsSim's configuration parameters: the dynamics of the robot model of spec §5
     /// "Physics" (`M·ω̇ = τ − b·ω`, torques saturated). All `always`: used from the next tick
     /// on. The defaults are [`PhysicsParams`]' defaults, the model the system is built with.
     pub struct PhysicsSimParams {
-        /// Mass `m` \[kg\] (SPEC §5 "Physics"; [`PhysicsParams::mass`]).
+        /// Mass `m` \[kg\] (spec §5 "Physics"; [`PhysicsParams::mass`]).
         mass: f64 = ("Mass", "kg", DEFAULT_MASS, 0.1, 1000.0, Always,
-            "mass m of the robot (SPEC §5 Physics): its share of the wheel-space mass matrix"),
-        /// Yaw moment of inertia `I` about the axle centre \[kg·m²\] (SPEC §5 "Physics";
+            "mass m of the robot (spec §5 Physics): its share of the wheel-space mass matrix"),
+        /// Yaw moment of inertia `I` about the axle centre \[kg·m²\] (spec §5 "Physics";
         /// [`PhysicsParams::yaw_inertia`]).
         yaw_inertia: f64 = ("YawInertia", "kg·m²", DEFAULT_YAW_INERTIA, 0.001, 1000.0, Always,
-            "yaw moment of inertia I about the axle centre (SPEC §5 Physics): resists turning"),
-        /// Viscous friction `b` at each wheel \[N·m·s/rad\] (SPEC §5 "Physics";
+            "yaw moment of inertia I about the axle centre (spec §5 Physics): resists turning"),
+        /// Viscous friction `b` at each wheel \[N·m·s/rad\] (spec §5 "Physics";
         /// [`PhysicsParams::viscous_friction`]).
         viscous_friction: f64 = ("ViscousFriction", "N·m·s/rad", DEFAULT_VISCOUS_FRICTION,
             0.0, 10.0, Always,
-            "viscous friction b at each wheel (SPEC §5 Physics): torque b·ω against the wheel's rate"),
-        /// Torque saturation of each wheel's motor \[N·m\] (SPEC §5 "Physics";
+            "viscous friction b at each wheel (spec §5 Physics): torque b·ω against the wheel's rate"),
+        /// Torque saturation of each wheel's motor \[N·m\] (spec §5 "Physics";
         /// [`PhysicsParams::max_torque`]).
         max_torque: f64 = ("MaxTorque", "N·m", DEFAULT_MAX_TORQUE, 0.01, 100.0, Always,
-            "largest torque of each wheel's motor (SPEC §5 Physics): commands above it saturate"),
+            "largest torque of each wheel's motor (spec §5 Physics): commands above it saturate"),
     }
 }
 
@@ -168,18 +168,10 @@ impl PhysicsSim {
         self.physics.set_map(map);
     }
 
-    /// `MapUpdate` on the held map (atomic; SPEC §2). A timestamp whose `nsec` is not below
-    /// 10⁹ is refused ([`Time::checked`], SPEC §4 Decision 0.2) and nothing changes.
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        tm: Time,
-    ) -> crate::Result<usize> {
-        let tm = tm.checked("MapUpdate")?;
-        self.physics.map_update(x, y, value, num, tm)
+    /// `MapUpdate` on the held map (atomic; spec §2). A timestamp whose `nsec` is not below
+    /// 10⁹ is refused ([`MapUpdate::check`], spec §4 Decision 0.2) and nothing changes.
+    pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
+        self.physics.map_update(update)
     }
 
     /// The torque being applied (the newest valid input; zero after a bad one) \[N·m\].
@@ -199,7 +191,7 @@ impl PhysicsSim {
 
     /// Whether a bump also fails `on_execute` with the bump report as the reason, so the
     /// component goes to Error (the whole system's "a bump stops the robot and puts the
-    /// system in Error", SPEC §5 Physics; used by `system::System`). Off by default: the
+    /// system in Error", spec §5 Physics; used by `system::System`). Off by default: the
     /// report is then only written to `bump`.
     pub fn set_fail_on_bump(&mut self, fail: bool) {
         self.fail_on_bump = fail;

@@ -1,4 +1,4 @@
-//! A* on the 8-connected grid (SPEC §5 "GlobalPathPlanning"): octile costs, no corner
+//! A* on the 8-connected grid (spec §5 "GlobalPathPlanning"): octile costs, no corner
 //! cutting, optimal, deterministic.
 //!
 //! - **Moves**: the eight neighbours; a straight step costs 1, a diagonal √2, and a diagonal
@@ -8,7 +8,7 @@
 //!   order them exactly as the real numbers `a + b·√2`, so no rounding ever decides.
 //! - **Heuristic**: the octile distance, admissible and consistent, so a cell is expanded at
 //!   most once and the goal's cost is optimal when it is taken from the queue.
-//! - **Ties** (SPEC §6): cells with equal `f = g + h` leave the queue in an order fixed by
+//! - **Ties** (spec §6): cells with equal `f = g + h` leave the queue in an order fixed by
 //!   the order they entered it (the last one in first, as far as the radix heap's buckets
 //!   allow); neighbours are visited in a fixed order and a cell's parent changes only on a
 //!   strictly lower cost. The same map, start and goal give the same path everywhere.
@@ -125,10 +125,10 @@ const MOVE_MASK: u8 = 0b0000_0111;
 /// Generations 1..=7 fit the three bits; then the marks are cleared once.
 const LAST_GENERATION: u8 = 7;
 
-/// The A* planner for one map and one `dmin` (SPEC §5 "GlobalPathPlanning").
+/// The A* planner for one map and one `dmin` (spec §5 "GlobalPathPlanning").
 ///
 /// A cell is passable when its obstacle distance exceeds `dmin` (with `dmin = 0`, exactly
-/// the free cells; SPEC §2, 000 §5.2.4.9 "dmin 以下の格子は通行不可"); outside the map is
+/// the free cells; spec §2, 000 §5.2.4.9 "dmin 以下の格子は通行不可"); outside the map is
 /// blocked. The planner copies what it needs from the map when it is made: a later change
 /// to the map (or to `dmin`) needs a new planner. It keeps its scratch space between plans,
 /// so repeated plans allocate only the returned path.

@@ -1,4 +1,4 @@
-//! Exact octile path costs (SPEC §5 "GlobalPathPlanning": octile costs, optimal lengths).
+//! Exact octile path costs (spec §5 "GlobalPathPlanning": octile costs, optimal lengths).
 //!
 //! A path on the 8-connected grid costs `a + b·√2` cells for `a` straight and `b` diagonal
 //! steps. Summing `f64`s would round, and rounding would make equal costs unequal depending

@@ -11,7 +11,7 @@
 //! lower buckets (each entry moves down at most once per bit).
 //!
 //! Within equal keys the cell added last is taken first (bucket 0 is a stack), so the order
-//! depends only on the order of insertion: deterministic (SPEC §6).
+//! depends only on the order of insertion: deterministic (spec §6).
 
 /// An unsigned integer key usable in [`RadixHeap`].
 pub(crate) trait RadixKey: Copy + Ord + Default {

@@ -1,4 +1,4 @@
-//! Control points of a grid path (000 §5.2.4.12, SPEC §3 step 7).
+//! Control points of a grid path (000 §5.2.4.12, spec §3 step 7).
 
 use crate::map::{Cell, GridMap};
 

@@ -1,4 +1,4 @@
-//! The local path by descent (000 §5.2.4.10, SPEC §3 step 5).
+//! The local path by descent (000 §5.2.4.10, spec §3 step 5).
 
 use super::potential_field::{CellState, NEIGHBOURS, PotentialField};
 use crate::errors::LocalPathError;
@@ -10,7 +10,7 @@ use crate::map::Cell;
 ///
 /// Only reached cells are candidates (impassable cells have potential 0 and are ignored,
 /// as are cells the field never reached), and a diagonal step may not cut the corner of an
-/// impassable cell. **Decision (SPEC §3 step 5)**: "lower" compares the key
+/// impassable cell. **Decision (spec §3 step 5)**: "lower" compares the key
 /// `(potential, finalization order)` of [`PotentialField::key`], so equal potentials cannot
 /// stall the descent: every reached cell but the target has a lower neighbour (its parent),
 /// and the keys strictly decrease, so the descent ends at the target. It is in fact the

@@ -1,4 +1,4 @@
-//! The local target ("局所経路作成目標位置", 000 §5.2.4.8, SPEC §3 step 3).
+//! The local target ("局所経路作成目標位置", 000 §5.2.4.8, spec §3 step 3).
 
 use serde::{Deserialize, Serialize};
 
@@ -48,7 +48,7 @@ pub fn step_length(a: Cell, b: Cell, grid_size: f64) -> f64 {
 }
 
 /// The index of the held-path cell nearest `position` (cell centre, straight distance),
-/// searched from `from` to the end; ties go to the earliest. **Decision (SPEC §3 step 3)**:
+/// searched from `from` to the end; ties go to the earliest. **Decision (spec §3 step 3)**:
 /// searching forward from the last match means a path that loops back past the robot is
 /// not cut short. `None` if `from` is past the end.
 pub fn nearest_path_index(

@@ -1,4 +1,4 @@
-//! Merging the local path with the rest of the held path (000 §5.2.4.11, SPEC §3 step 6).
+//! Merging the local path with the rest of the held path (000 §5.2.4.11, spec §3 step 6).
 
 use crate::map::Cell;
 

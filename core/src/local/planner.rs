@@ -1,4 +1,4 @@
-//! One local plan, start to finish (SPEC §3 steps 3–7): local target, potential field,
+//! One local plan, start to finish (spec §3 steps 3–7): local target, potential field,
 //! descent, merge, control points. The component decides *when* to plan; this decides
 //! *what* the plan is. Buffers (the field) are reused between plans.
 
@@ -49,7 +49,7 @@ pub struct PlanRequest<'a> {
     pub current: Pose,
     /// The goal pose of `SetPosition`.
     pub goal: Pose,
-    /// The driving direction in effect (SPEC §3 step 1 may have switched it).
+    /// The driving direction in effect (spec §3 step 1 may have switched it).
     pub direction: Direction,
     /// The parameters.
     pub params: PlanParams,
@@ -100,7 +100,7 @@ impl LocalPlanner {
         self.field_fresh
     }
 
-    /// Makes a plan (SPEC §3 steps 3–7).
+    /// Makes a plan (spec §3 steps 3–7).
     ///
     /// Errors: the current position outside the map or within `dmin` of an obstacle; a
     /// parameter out of range; no local target ([`find_local_target`]); no route

@@ -1,8 +1,8 @@
-//! The potential field of 000 §5.2.4.9 (SPEC §3 step 4), as a value other code can read and
+//! The potential field of 000 §5.2.4.9 (spec §3 step 4), as a value other code can read and
 //! draw: per cell the potential `G`, its three parts (repulsion `R`, attraction `A`, posture
 //! `P`), the path length `L` to the local target, and a state.
 //!
-//! **Order (SPEC §3 step 4 Decision)**: the field grows from the local target in Dijkstra
+//! **Order (spec §3 step 4 Decision)**: the field grows from the local target in Dijkstra
 //! order. A cell is *assigned* once, when its first 8-neighbour is *finalized* (popped from
 //! the queue): `G(c) = G(p) + R(c) + A(c) + P(c)`, `L(c) = L(p) + step(p, c)`. Every increment
 //! is positive, so cells are finalized in increasing `(G, assignment order)`, and the parent
@@ -97,7 +97,7 @@ pub struct FieldRequest {
     pub current_heading: f64,
     /// The robot's heading wanted at the target \[rad\].
     pub target_heading: f64,
-    /// Forward, or backward: then both headings are turned by π (SPEC §3 step 4), since
+    /// Forward, or backward: then both headings are turned by π (spec §3 step 4), since
     /// the robot moves against its heading.
     pub direction: Direction,
     /// `dmin` \[m\]: cells with obstacle distance ≤ `dmin` are impassable.
@@ -251,7 +251,7 @@ impl PotentialField {
         self.current_reached = false;
     }
 
-    /// Dijkstra growth from the target (000 §5.2.4.9, SPEC §3 step 4).
+    /// Dijkstra growth from the target (000 §5.2.4.9, spec §3 step 4).
     fn grow(&mut self, map: &GridMap, req: &FieldRequest) {
         let (w, h) = (self.width as i64, self.height as i64);
         let g = map.grid_size();
@@ -462,7 +462,7 @@ impl PotentialField {
     }
 }
 
-/// `G_Angle · G_Distance + S_Angle · S_Distance` of SPEC §3 step 4, from integer cell
+/// `G_Angle · G_Distance + S_Angle · S_Distance` of spec §3 step 4, from integer cell
 /// offsets `v` = current → c and `w` = c → target, unit motion headings `hs`, `ht`, and the
 /// path length `l` \[m\]. 0 where `SL` or `GL` is 0. Angles are in [0, π], computed as
 /// `atan2(|v × h|, v · h)`, which needs no wrapping.

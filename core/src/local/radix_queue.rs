@@ -7,7 +7,7 @@
 //! highest bit differing from the last popped key is bit `b − 1`; bucket 0 holds keys equal
 //! to it.
 //!
-//! **Ties**: entries of equal key come out in push order (SPEC §3 step 4: "ties by
+//! **Ties**: entries of equal key come out in push order (spec §3 step 4: "ties by
 //! insertion order"). Every bucket stays in push order: a push has the newest sequence
 //! number and is appended; a redistribution moves the first non-empty bucket, in order,
 //! into the lower buckets, which are all empty at that moment. Bucket 0 is read from the

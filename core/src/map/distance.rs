@@ -1,4 +1,4 @@
-//! Exact Euclidean distance transform in linear time, SPEC §2 "Obstacle distance".
+//! Exact Euclidean distance transform in linear time, spec §2 "Obstacle distance".
 //!
 //! The algorithm is the two-phase one of Meijster, Roerdink & Hesselink ("A general algorithm
 //! for computing distance transforms in linear time", 2000), which computes the same lower
@@ -16,7 +16,7 @@
 //!
 //! Metres are `√d² · GridSize` (`f64::sqrt`, correctly rounded on every target), through a table for small `d²`.
 //!
-//! Everything outside the map is obstacle (SPEC §2), so the transform sees a virtual ring of
+//! Everything outside the map is obstacle (spec §2), so the transform sees a virtual ring of
 //! obstacle cells around the map: in the column phase the rows `y = −1` and `y = height`, in
 //! the row phase the columns `x = −1` and `x = width`. Distances are therefore always finite
 //! and at most half the map's smaller side (plus one).
@@ -195,7 +195,7 @@ fn floor_div(n: i64, d: i64) -> i64 {
 /// the values are identical, it only saves time.
 const METRE_TABLE_LEN: usize = 4096;
 
-/// `√d² · grid_size`: the one formula for metres (SPEC §6: `sqrt` through `libm`).
+/// `√d² · grid_size`: the one formula for metres (spec §6: `sqrt` through `libm`).
 fn to_metres(d2: u64, grid_size: f64) -> f64 {
     f64::sqrt(d2 as f64) * grid_size
 }
@@ -381,7 +381,7 @@ impl DistanceField {
 }
 
 /// Squared distance, in cells², from every cell's centre to the nearest obstacle cell's
-/// centre, counting the ring of cells just outside the map as obstacles (SPEC §2). `obstacle`
+/// centre, counting the ring of cells just outside the map as obstacles (spec §2). `obstacle`
 /// is x fastest, `width × height`; an empty vector if the length does not match or a side is
 /// 0. The metre values a [`super::GridMap`] holds are `√d² · GridSize` of these.
 pub fn euclidean_distance_squared(obstacle: &[bool], width: usize, height: usize) -> Vec<f64> {

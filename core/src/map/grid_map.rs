@@ -1,8 +1,8 @@
 //! `GridMap`: the occupancy grid of `SetMap` (000 §3.2.2.1 (4), §5.2.4.1), its world frame,
-//! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (SPEC §2).
+//! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (spec §2).
 
 use super::distance::DistanceField;
-use crate::errors::MapError;
+use super::{MapError, MapUpdate};
 use crate::rtc::Time;
 
 /// The largest map accepted: 16 Mi cells (a 4096 × 4096 map), so a bad header gives a clear
@@ -15,7 +15,7 @@ pub const MAX_CELLS: usize = 16 * 1024 * 1024;
 /// passable with a repulsion `1/(d − dmin)²` of about 10³².
 pub const DMIN_TOLERANCE: f64 = 1e-9;
 
-/// Whether an obstacle distance lies within `dmin` (SPEC §2, §3 step 4: "cells with obstacle
+/// Whether an obstacle distance lies within `dmin` (spec §2, §3 step 4: "cells with obstacle
 /// distance ≤ `dmin` are impassable"), with [`DMIN_TOLERANCE`]. Every planner, the renderer's
 /// dmin zone and the start/goal checks use this one predicate.
 pub fn within_dmin(distance: f64, dmin: f64) -> bool {
@@ -26,7 +26,7 @@ pub fn within_dmin(distance: f64, dmin: f64) -> bool {
 /// lower-left cell.
 pub type Cell = (usize, usize);
 
-/// An occupancy grid. A `GridMap` that exists is valid (SPEC §2 Decision): dimensions ≥ 1,
+/// An occupancy grid. A `GridMap` that exists is valid (spec §2 Decision): dimensions ≥ 1,
 /// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
 /// 0 (free) or 1 (obstacle).
 #[derive(Debug, Clone, PartialEq)]
@@ -203,7 +203,7 @@ impl GridMap {
         &self.cells
     }
 
-    /// Obstacle distances in metres, x fastest (SPEC §2): from each cell's centre to the
+    /// Obstacle distances in metres, x fastest (spec §2): from each cell's centre to the
     /// nearest obstacle cell's centre, cells outside the map counting as obstacles; 0 on an
     /// obstacle cell.
     pub fn distances(&self) -> &[f64] {
@@ -221,12 +221,12 @@ impl GridMap {
         x >= 0 && y >= 0 && (x as u64) < self.width as u64 && (y as u64) < self.height as u64
     }
 
-    /// Whether `(x, y)` is an obstacle; outside the map counts as obstacle (SPEC §2).
+    /// Whether `(x, y)` is an obstacle; outside the map counts as obstacle (spec §2).
     pub fn is_obstacle(&self, x: i64, y: i64) -> bool {
         !self.contains(x, y) || self.cells[x as usize + y as usize * self.width] == 1
     }
 
-    /// Obstacle distance of a cell, metres (SPEC §2): 0 on an obstacle cell, and 0 for a
+    /// Obstacle distance of a cell, metres (spec §2): 0 on an obstacle cell, and 0 for a
     /// cell outside the map, which counts as obstacle.
     pub fn obstacle_distance(&self, (x, y): Cell) -> f64 {
         if x < self.width && y < self.height {
@@ -250,7 +250,7 @@ impl GridMap {
         Some((fx as i64, fy as i64))
     }
 
-    /// The in-map cell containing world point `(wx, wy)`, if any (SPEC §2 "World ↔ grid").
+    /// The in-map cell containing world point `(wx, wy)`, if any (spec §2 "World ↔ grid").
     pub fn world_to_cell(&self, wx: f64, wy: f64) -> Option<Cell> {
         let (x, y) = self.world_to_cell_signed(wx, wy)?;
         self.contains(x, y).then_some((x as usize, y as usize))
@@ -271,44 +271,12 @@ impl GridMap {
         !within_dmin(self.obstacle_distance(cell), dmin)
     }
 
-    /// `MapUpdate(X, Y, value, num, sec, nsec)` (000 §3.2.2.1 (5), SPEC §2 Decision): all
-    /// or nothing. Returns the number of cells whose value changed.
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        tm: Time,
-    ) -> Result<usize, MapError> {
-        for (array, len) in [("X", x.len()), ("Y", y.len()), ("value", value.len())] {
-            if num < 0 || len != num as usize {
-                return Err(MapError::UpdateLength {
-                    array,
-                    len,
-                    num: i64::from(num),
-                });
-            }
-        }
-        for i in 0..x.len() {
-            let (cx, cy) = (i64::from(x[i]), i64::from(y[i]));
-            if !self.contains(cx, cy) {
-                return Err(MapError::CellOutside {
-                    what: "MapUpdate",
-                    x: cx,
-                    y: cy,
-                    width: self.width,
-                    height: self.height,
-                });
-            }
-            if !(0..=1).contains(&value[i]) {
-                return Err(MapError::BadCellValue {
-                    what: "value",
-                    index: i,
-                    value: i64::from(value[i]),
-                });
-            }
-        }
+    /// `MapUpdate` (000 §3.2.2.1 (5), spec §2 Decision): checked completely first
+    /// ([`MapUpdate::check`]), then applied — all or nothing. Returns the number of cells whose
+    /// value changed; the timestamp becomes the map's version.
+    pub fn map_update(&mut self, update: &MapUpdate) -> Result<usize, MapError> {
+        update.check(self)?;
+        let (x, y, value, tm) = (&update.x, &update.y, &update.value, update.tm);
         // Validated: apply. A cell listed twice takes its last value, as if the entries were
         // applied one after the other; only cells whose value differs afterwards count.
         let mut listed: Vec<(usize, u8)> = x
@@ -396,19 +364,46 @@ mod tests {
         let before = m.clone();
         let tm = Time { sec: 3, nsec: 4 };
         assert!(matches!(
-            m.map_update(&[0, 1], &[0], &[1, 1], 2, tm),
+            m.map_update(&MapUpdate {
+                x: vec![0, 1],
+                y: vec![0],
+                value: vec![1, 1],
+                num: 2,
+                tm: tm
+            }),
             Err(MapError::UpdateLength { array: "Y", .. })
         ));
         assert!(matches!(
-            m.map_update(&[0, 2], &[0, 0], &[1, 1], 2, tm),
+            m.map_update(&MapUpdate {
+                x: vec![0, 2],
+                y: vec![0, 0],
+                value: vec![1, 1],
+                num: 2,
+                tm: tm
+            }),
             Err(MapError::CellOutside { x: 2, .. })
         ));
         assert!(matches!(
-            m.map_update(&[0, 1], &[0, 0], &[1, 2], 2, tm),
+            m.map_update(&MapUpdate {
+                x: vec![0, 1],
+                y: vec![0, 0],
+                value: vec![1, 2],
+                num: 2,
+                tm: tm
+            }),
             Err(MapError::BadCellValue { what: "value", .. })
         ));
         assert_eq!(m, before);
-        assert_eq!(m.map_update(&[0, 1], &[0, 0], &[1, 1], 2, tm), Ok(2));
+        assert_eq!(
+            m.map_update(&MapUpdate {
+                x: vec![0, 1],
+                y: vec![0, 0],
+                value: vec![1, 1],
+                num: 2,
+                tm: tm
+            }),
+            Ok(2)
+        );
         assert_eq!(m.version(), tm);
         assert!(m.is_obstacle(1, 0));
         assert_eq!(m.obstacle_distance((0, 1)), 1.0);

@@ -1,9 +1,18 @@
-//! The grid map every component shares (SPEC §2), its obstacle distances, and the map file
+//! The grid map every component shares (spec §2), its obstacle distances, and the map file
 //! formats.
 
+mod error;
+pub use error::MapError;
+
+mod clearance;
 mod distance;
+mod escape;
 pub mod formats;
 mod grid_map;
+mod map_update;
 
+pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound, could_be_below};
 pub use distance::euclidean_distance_squared;
+pub use escape::escape_route;
 pub use grid_map::{Cell, DMIN_TOLERANCE, GridMap, MAX_CELLS, within_dmin};
+pub use map_update::MapUpdate;

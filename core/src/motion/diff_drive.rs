@@ -1,4 +1,4 @@
-//! Differential-drive kinematics (002 §5.2.5.4, SPEC §4, §5) and exact arc integration.
+//! Differential-drive kinematics (002 §5.2.5.4, spec §4, §5) and exact arc integration.
 
 use core::f64::consts::PI;
 
@@ -72,7 +72,7 @@ impl DiffDrive {
 
     /// Target wheel rates `[ω_L*, ω_R*]` \[rad/s\] for a body velocity `(V, ω)`.
     ///
-    /// 002 §5.2.5.4 writes `(ρ ∓ R)·ω / r` with `ρ = V/ω`; SPEC §4 Decision: computed as
+    /// 002 §5.2.5.4 writes `(ρ ∓ R)·ω / r` with `ρ = V/ω`; spec §4 Decision: computed as
     /// `(V ∓ R·ω)/r`, the same value, defined also for ω = 0.
     pub fn wheel_rates(&self, v: f64, w: f64) -> [f64; 2] {
         let r = self.half_axle();
@@ -109,7 +109,7 @@ fn sinc(x: f64) -> f64 {
 }
 
 /// Moves `pose` along a circular arc of length `ds` that turns the heading by `dtheta`
-/// (exact for constant curvature; a straight line when `dtheta` = 0). SPEC §5 "exact arc
+/// (exact for constant curvature; a straight line when `dtheta` = 0). spec §5 "exact arc
 /// integration": the chord has length `ds·sinc(Δθ/2)` and direction `θ + Δθ/2`.
 /// The heading is wrapped to (−π, π].
 pub fn arc_step(pose: Pose, ds: f64, dtheta: f64) -> Pose {
@@ -123,7 +123,7 @@ pub fn arc_step(pose: Pose, ds: f64, dtheta: f64) -> Pose {
     }
 }
 
-/// `a` wrapped to (−π, π] (SPEC §4: "θ … wrapped to (−π, π]").
+/// `a` wrapped to (−π, π] (spec §4: "θ … wrapped to (−π, π]").
 pub fn wrap_angle(a: f64) -> f64 {
     if !a.is_finite() {
         return a;

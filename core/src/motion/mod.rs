@@ -1,18 +1,23 @@
 //! The robot's motion: differential-drive kinematics and the physics that replaces OpenHRP3
-//! (SPEC §4, §5).
+//! (spec §4, §5).
 //!
 //! Everything here is pure: explicit inputs, explicit time steps, no clock, `libm` for every
-//! transcendental function (SPEC §6). The RT-components that use it live in
+//! transcendental function (spec §6). The RT-components that use it live in
 //! `crate::components` (`MotorControl`, `PhysicsSim`, `DriveControl`, `Localization`).
 //!
 //! Architecture invariant: this module knows nothing of ports, ticks or the lifecycle.
 
+mod error;
+pub use error::MotionError;
+
+mod collision;
 mod diff_drive;
 mod model_frame;
 mod odometry;
 mod physics;
 mod pure_pursuit;
 
+pub use collision::free_travel;
 pub use diff_drive::{DiffDrive, angle_diff, arc_step, wrap_angle};
 pub use model_frame::{ModelFrame, TRANSFORM_LEN};
 pub use odometry::Odometry;

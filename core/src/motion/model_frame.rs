@@ -1,5 +1,5 @@
 //! The simulated pose: OpenHRP3's model frame ↔ the robot's axle-centre pose
-//! (002 §4.2 \[*1\] \[*2\], §5.2.5.6, SPEC §4 "Simulated pose").
+//! (002 §4.2 \[*1\] \[*2\], §5.2.5.6, spec §4 "Simulated pose").
 //!
 //! OpenHRP3 reports the body as `[X, Y, Z, A11, A12, A13, A21, …, A33]`: the model origin and
 //! its 3×3 rotation matrix, row-major (`BODY:ABS_TRANSFORM`, 002 §3.1 `InSimulatedPosition`,
@@ -97,7 +97,7 @@ impl ModelFrame {
 
     /// The inverse of [`ModelFrame::axle_pose`]: the body transform OpenHRP3 would report for
     /// a robot whose axle centre is at `pose`, its model origin at height `z` (used by the
-    /// physics, SPEC §5 "It reports the pose as OpenHRP3 did").
+    /// physics, spec §5 "It reports the pose as OpenHRP3 did").
     pub fn model_transform(&self, pose: Pose, z: f64) -> [f64; TRANSFORM_LEN] {
         let theta_o = pose.theta - self.offset_angle;
         let rot = Rotation3::from_axis_angle(&Vector3::z_axis(), theta_o);

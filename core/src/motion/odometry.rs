@@ -1,4 +1,4 @@
-//! Wheel odometry: the pose from wheel angles by exact arc integration (SPEC §5
+//! Wheel odometry: the pose from wheel angles by exact arc integration (spec §5
 //! "Localization … or from wheel odometry").
 
 use super::diff_drive::{DiffDrive, arc_step};

@@ -1,4 +1,4 @@
-//! The physics that replaces OpenHRP3 (SPEC §5 "Physics"): a rigid differential-drive robot
+//! The physics that replaces OpenHRP3 (spec §5 "Physics"): a rigid differential-drive robot
 //! without wheel slip, stepped at a fixed 1 ms, with bump detection against the grid map.
 //!
 //! State: the axle-centre pose, the wheel angles and rates. Input: the wheel torques
@@ -21,12 +21,12 @@ use serde::{Deserialize, Serialize};
 
 use super::diff_drive::{DiffDrive, arc_step};
 use super::model_frame::{ModelFrame, TRANSFORM_LEN};
-use crate::errors::{MapError, MotionError};
+use crate::errors::MotionError;
 use crate::interfaces::Pose;
-use crate::map::GridMap;
+use crate::map::{GridMap, MapUpdate};
 use crate::rtc::Time;
 
-/// The fixed physics step: 1 ms (SPEC §5 "Fixed step 1 ms"), in nanoseconds.
+/// The fixed physics step: 1 ms (spec §5 "Fixed step 1 ms"), in nanoseconds.
 pub const STEP_NS: u64 = 1_000_000;
 /// The fixed physics step in seconds.
 pub const STEP_S: f64 = 0.001;
@@ -75,7 +75,7 @@ fn default_body_radius() -> f64 {
     0.45
 }
 
-/// The robot model of the physics (SPEC §5). Defaults: a ~20 kg robot with the seed's
+/// The robot model of the physics (spec §5). Defaults: a ~20 kg robot with the seed's
 /// wheels and axle (002 §4.2), tuned so MotorControl's default gains (P 5, D 2) reach a
 /// commanded speed within 2 % in well under a second.
 ///
@@ -224,7 +224,7 @@ impl PhysicsParams {
         Ok(())
     }
 
-    /// The wheel-space mass matrix `M = [[a, c], [c, a]]` (SPEC §5).
+    /// The wheel-space mass matrix `M = [[a, c], [c, a]]` (spec §5).
     pub fn mass_matrix(&self) -> Matrix2<f64> {
         let r2 = self.wheel_radius * self.wheel_radius;
         let half = self.axle_length / 2.0;
@@ -236,7 +236,7 @@ impl PhysicsParams {
     }
 }
 
-/// The physics' state (SPEC §5 "state pose, wheel angles and rates").
+/// The physics' state (spec §5 "state pose, wheel angles and rates").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct PhysicsState {
     /// Simulated time \[ns\].
@@ -254,7 +254,7 @@ pub struct PhysicsState {
     pub in_contact: bool,
 }
 
-/// A bump (SPEC §5 "touching an obstacle cell is a bump"): who hit what, where, when.
+/// A bump (spec §5 "touching an obstacle cell is a bump"): who hit what, where, when.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BumpReport {
     /// Simulated time of the bump.
@@ -332,7 +332,7 @@ impl Model {
     }
 }
 
-/// The physics of SPEC §5: [`Physics::step`] advances it by exactly 1 ms.
+/// The physics of spec §5: [`Physics::step`] advances it by exactly 1 ms.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Physics {
     params: PhysicsParams,
@@ -385,7 +385,7 @@ impl Physics {
         &self.params
     }
 
-    /// Replaces the parameters (PhysicsSim's configuration, SPEC §5 "Physics"): checked as
+    /// Replaces the parameters (PhysicsSim's configuration, spec §5 "Physics"): checked as
     /// [`Physics::new`] checks them, then everything that depends on them is recomputed —
     /// the mass matrix `M`, `(M + h·b·I)⁻¹`, the wheel geometry, the model frame and the
     /// body's contact. The state (pose, wheel angles and rates, time) is kept, so the next
@@ -466,7 +466,7 @@ impl Physics {
         Ok(())
     }
 
-    /// The map used for bump detection (SPEC §5), `None` for open space.
+    /// The map used for bump detection (spec §5), `None` for open space.
     pub fn map(&self) -> Option<&GridMap> {
         self.map.as_ref()
     }
@@ -478,23 +478,14 @@ impl Physics {
         self.refresh_touch();
     }
 
-    /// `MapUpdate(X, Y, value, num, tm)` on the held map (SPEC §2, atomic). An obstacle that
-    /// appears on the body gives a bump at the next step.
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        tm: Time,
-    ) -> crate::Result<usize> {
+    /// `MapUpdate` on the held map (spec §2, atomic). An obstacle that appears on the body
+    /// gives a bump at the next step.
+    pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
         let map = self
             .map
             .as_mut()
             .ok_or(MotionError::NoMap { what: "MapUpdate" })?;
-        let changed = map
-            .map_update(x, y, value, num, tm)
-            .map_err(|e: MapError| crate::Error::from(e))?;
+        let changed = map.map_update(update)?;
         self.refresh_touch();
         Ok(changed)
     }
@@ -507,7 +498,7 @@ impl Physics {
     }
 
     /// The body transform OpenHRP3 would report: `[X, Y, Z, A11..A33]` of the model origin
-    /// (SPEC §5 "It reports the pose as OpenHRP3 did").
+    /// (spec §5 "It reports the pose as OpenHRP3 did").
     pub fn model_transform(&self) -> [f64; TRANSFORM_LEN] {
         self.frame
             .model_transform(self.state.pose, self.params.model_z)

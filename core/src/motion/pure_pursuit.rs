@@ -1,4 +1,4 @@
-//! Path following for DriveControl (SPEC §5 "DriveControl"): the control points as a
+//! Path following for DriveControl (spec §5 "DriveControl"): the control points as a
 //! polyline, pure pursuit with a look-ahead, limits on speed, acceleration and turn rate,
 //! turning on the spot when the heading error is large, slowing to a stop at the goal and
 //! turning to the goal heading, backward driving.
@@ -108,15 +108,15 @@ impl Polyline {
         if n == 1 || s <= 0.0 {
             return self.points[0];
         }
-        for i in 0..n - 1 {
-            let (s0, s1) = (self.cumulative[i], self.cumulative[i + 1]);
-            if s <= s1 {
-                let t = (s - s0) / (s1 - s0);
-                let (a, b) = (self.points[i], self.points[i + 1]);
-                return (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
-            }
+        // The first segment whose end is at or beyond `s`.
+        let i = self.cumulative[1..].partition_point(|&c| c < s);
+        if i >= n - 1 {
+            return self.points[n - 1];
         }
-        self.points[n - 1]
+        let (s0, s1) = (self.cumulative[i], self.cumulative[i + 1]);
+        let t = (s - s0) / (s1 - s0);
+        let (a, b) = (self.points[i], self.points[i + 1]);
+        (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
     }
 
     /// Unit direction of segment `i`.
@@ -185,7 +185,7 @@ impl Polyline {
     }
 }
 
-/// DriveControl's limits and gains (SPEC §5; DriveControl's configuration parameters).
+/// DriveControl's limits and gains (spec §5; DriveControl's configuration parameters).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PursuitParams {
     /// Largest speed \[m/s\].
@@ -338,22 +338,51 @@ impl PurePursuit {
         self.last = (0.0, 0.0);
     }
 
+    /// Replaces the last command by `(v, ω)` (a slower one a safety check allowed), so the
+    /// rate limits continue from what was sent.
+    pub fn limit_command(&mut self, v: f64, w: f64) {
+        self.last = (v, w);
+    }
+
+    /// While following, turns on the spot towards the look-ahead point first (a circular
+    /// body may always turn where it stands).
+    pub fn turn_in_place(&mut self) {
+        if self.phase == DrivePhase::Following {
+            self.phase = DrivePhase::TurnInPlace;
+        }
+    }
+
     /// Whether point `k` (1 ≤ k < n−1) turns the path by more than `angle`, or is the goal.
-    fn is_stop(line: &Polyline, k: usize, angle: f64) -> bool {
+    /// The turn is measured over `window` metres each side (the chords from the path point
+    /// `window` before the vertex and to the one `window` after it): a one-cell jog or
+    /// zigzag of a grid path is followed smoothly, a real corner is a stop.
+    fn is_stop(line: &Polyline, k: usize, angle: f64, window: f64) -> bool {
         let n = line.points.len();
         if k + 1 >= n {
             return true;
         }
-        let (ax, ay) = line.direction(k - 1);
-        let (bx, by) = line.direction(k);
+        let v = line.points[k];
+        let s = line.cumulative[k];
+        let before = line.point_at((s - window).max(0.0));
+        let after = line.point_at((s + window).min(line.length()));
+        let chord = |a: (f64, f64), b: (f64, f64), fallback: (f64, f64)| {
+            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+            if dx == 0.0 && dy == 0.0 {
+                fallback
+            } else {
+                (dx, dy)
+            }
+        };
+        let (ax, ay) = chord(before, v, line.direction(k - 1));
+        let (bx, by) = chord(v, after, line.direction(k));
         let turn = angle_diff(libm::atan2(by, bx), libm::atan2(ay, ax)).abs();
         turn > angle
     }
 
-    fn next_stop(line: &Polyline, reached: usize, angle: f64) -> usize {
+    fn next_stop(line: &Polyline, reached: usize, angle: f64, window: f64) -> usize {
         let n = line.points.len();
         (reached + 1..n)
-            .find(|&k| Self::is_stop(line, k, angle))
+            .find(|&k| Self::is_stop(line, k, angle, window))
             .unwrap_or(n - 1)
     }
 
@@ -432,8 +461,12 @@ impl PurePursuit {
                         self.phase = DrivePhase::FinalTurn;
                         continue;
                     }
-                    let stop =
-                        Self::next_stop(&path.line, path.reached, params.turn_in_place_angle);
+                    let stop = Self::next_stop(
+                        &path.line,
+                        path.reached,
+                        params.turn_in_place_angle,
+                        params.look_ahead_distance,
+                    );
                     let (lo, hi) = (
                         path.line.cumulative[path.reached],
                         path.line.cumulative[stop],

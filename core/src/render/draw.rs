@@ -1,11 +1,11 @@
 //! Vector drawing with tiny-skia, in frame pixel coordinates: paths, markers, arrows and the
 //! robot. Only lines, polygons and circles are used (no cubics, no rotation transforms), so
-//! tiny-skia needs no platform float function; every angle goes through `libm` (SPEC §6).
+//! tiny-skia needs no platform float function; every angle goes through `libm` (spec §6).
 //! A path that cannot be built (e.g. coordinates overflowing `f32`) is skipped, never a panic.
 
 use tiny_skia::{FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Stroke, Transform};
 
-use super::raster::Rgba;
+use super::colour::Rgba;
 use super::style;
 
 /// A point in frame pixels.

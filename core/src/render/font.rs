@@ -7,7 +7,7 @@
 
 use tiny_skia::Pixmap;
 
-use super::raster::Rgba;
+use super::colour::Rgba;
 
 /// Glyph columns for ASCII 32 (space) ..= 126 (`~`).
 const GLYPHS: [[u8; 5]; 95] = [

@@ -1,5 +1,5 @@
 //! The renderer: one tiny-skia drawing of the system for PNGs and the browser canvas
-//! (SPEC §5 InventGUI).
+//! (spec §5 InventGUI).
 //!
 //! A [`Scene`] borrows plain data — the [`GridMap`](crate::map::GridMap), `dmin`, an optional
 //! potential field ([`FieldView`]), paths as cells, control points, the local target, the
@@ -13,14 +13,19 @@
 //! robot; the side panel holds the colour bar, legend, scale bar, direction and caption.
 //!
 //! **Architecture Invariant**: `render` knows only `map` and `interfaces`: no planner,
-//! motion or system type. **Determinism** (SPEC §6): angles through `libm`, no `sin`/`cos`
+//! motion or system type. **Determinism** (spec §6): angles through `libm`, no `sin`/`cos`
 //! inside tiny-skia (no rotation transforms, no cubics), tiny-skia built without its `simd`
 //! feature so native and wasm32 run the same scalar code: a scene gives the same bytes on
 //! both.
 
+mod error;
+pub use error::RenderError;
+
+mod colour;
 mod draw;
 mod font;
 mod frame;
+mod of_system;
 mod panel;
 mod raster;
 mod renderer;
@@ -29,6 +34,7 @@ mod style;
 mod view;
 
 pub use frame::Frame;
+pub use of_system::{FieldBuffers, caption, scene_of};
 pub use renderer::Renderer;
 pub use scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
 pub use view::{MAX_FRAME_SIDE, ViewTransform};

@@ -3,9 +3,10 @@
 
 use tiny_skia::Pixmap;
 
+use super::colour::Rgba;
 use super::draw::{self, Px};
 use super::font::{self, ADVANCE, LINE};
-use super::raster::{HeatRange, Rgba, fill_rect};
+use super::raster::{HeatRange, fill_rect};
 use super::scene::Layers;
 use super::style;
 use super::view::{Layout, PixelRect, ViewTransform};

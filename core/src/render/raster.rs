@@ -7,50 +7,14 @@
 //! one-cell wall never vanishes, it turns grey), computed as a separable box sum; when a cell
 //! is larger, a pixel shows the cell under its centre, and big cells get faint grid lines.
 //! Integer arithmetic and exact float operations only, so the result is the same on every
-//! target (SPEC §6).
+//! target (spec §6).
 
+use super::colour::Rgba;
 use super::scene::{FieldCellState, FieldView, Layers};
 use super::style;
 use super::view::ViewTransform;
 use crate::errors::RenderError;
 use crate::map::GridMap;
-
-/// An sRGB colour with straight alpha (255 = opaque).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct Rgba {
-    pub r: u8,
-    pub g: u8,
-    pub b: u8,
-    pub a: u8,
-}
-
-impl Rgba {
-    /// An opaque colour.
-    pub const fn rgb(r: u8, g: u8, b: u8) -> Self {
-        Self { r, g, b, a: 255 }
-    }
-
-    /// The same colour with alpha `a`.
-    pub const fn with_alpha(self, a: u8) -> Self {
-        Self { a, ..self }
-    }
-
-    /// `self` blended towards `other` by `w`/255.
-    pub fn mix(self, other: Self, w: u32) -> Self {
-        let m = |a: u8, b: u8| ((u32::from(a) * (255 - w) + u32::from(b) * w + 127) / 255) as u8;
-        Self::rgb(m(self.r, other.r), m(self.g, other.g), m(self.b, other.b))
-    }
-
-    /// Scaled by `f`/256 (darker).
-    fn shade(self, f: u32) -> Self {
-        let s = |c: u8| ((u32::from(c) * f) >> 8) as u8;
-        Self::rgb(s(self.r), s(self.g), s(self.b))
-    }
-
-    fn pack(self) -> u32 {
-        u32::from(self.r) | u32::from(self.g) << 8 | u32::from(self.b) << 16
-    }
-}
 
 /// Fills the rectangle `[x0, x1) × [y0, y1)` (clipped) of an RGBA buffer with opaque `c`.
 pub(crate) fn fill_rect(data: &mut [u8], width: u32, rect: (u32, u32, u32, u32), c: Rgba) {

@@ -8,10 +8,12 @@
 
 use tiny_skia::Pixmap;
 
+use super::colour::Rgba;
 use super::draw::{self, Px};
 use super::frame::Frame;
+use super::of_system::{FieldBuffers, scene_of};
 use super::panel::{self, PanelInput, TextArea};
-use super::raster::{Base, Heat, LogBins, Rgba, draw_map, fill_rect, viridis};
+use super::raster::{Base, Heat, LogBins, draw_map, fill_rect, viridis};
 use super::scene::{Layers, Scene};
 use super::style;
 use super::view::{Layout, ViewTransform};
@@ -19,6 +21,7 @@ use crate::errors::RenderError;
 use crate::interfaces::Direction;
 use crate::map::GridMap;
 use crate::rtc::Time;
+use crate::system::System;
 
 /// What identifies a map for the caches.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,7 +72,7 @@ struct HeatKey {
 /// Paths and the trail are drawn through the fewest points within this many pixels of them.
 const SIMPLIFY: f32 = 0.5;
 
-/// Draws scenes into an owned `width × height` frame (SPEC §5 InventGUI): the runner's PNGs
+/// Draws scenes into an owned `width × height` frame (spec §5 InventGUI): the runner's PNGs
 /// and the browser canvas. Keep one per canvas: it caches the static layers between frames.
 pub struct Renderer {
     layout: Layout,
@@ -81,6 +84,8 @@ pub struct Renderer {
     heat: Option<(HeatKey, Heat)>,
     log: LogBins,
     viridis: [Rgba; 256],
+    /// The potential field of the system drawn last, in the renderer's form.
+    field_buffers: FieldBuffers,
 }
 
 impl std::fmt::Debug for Renderer {
@@ -119,6 +124,7 @@ impl Renderer {
             heat: None,
             log: LogBins::new(),
             viridis: viridis(),
+            field_buffers: FieldBuffers::default(),
         })
     }
 
@@ -163,6 +169,23 @@ impl Renderer {
     /// The last frame drawn (blank before the first).
     pub fn frame(&self) -> &Frame {
         &self.frame
+    }
+
+    /// Draws `system` now ([`scene_of`]) with `layers` and `caption`; an error before a map
+    /// is loaded. The potential field is converted only when a new one was planned.
+    pub fn render_system(
+        &mut self,
+        system: &System,
+        caption: &str,
+        layers: Layers,
+    ) -> Result<&Frame, RenderError> {
+        let mut buffers = core::mem::take(&mut self.field_buffers);
+        let result = match scene_of(system, &mut buffers, caption, layers) {
+            Some(scene) => self.render(&scene).map(|_| ()),
+            None => Err(RenderError::NoMap),
+        };
+        self.field_buffers = buffers;
+        result.map(|()| &self.frame)
     }
 
     /// Draws `scene` and returns the frame. A scene with a non-finite number, a negative

@@ -46,7 +46,7 @@ pub struct RobotView {
     pub axle_length: f64,
     /// Wheel radius, metres (`radiusOfLeftWheel` / `radiusOfRightWheel`).
     pub wheel_radius: f64,
-    /// The body touches an obstacle (SPEC §5 Physics: "the GUI shows it"): drawn in red.
+    /// The body touches an obstacle (spec §5 Physics: "the GUI shows it"): drawn in red.
     pub bumped: bool,
 }
 

@@ -1,6 +1,6 @@
 //! Colours of the renderer: one place, so the map, the overlays and the legend agree.
 
-use super::raster::Rgba;
+use super::colour::Rgba;
 
 /// Page and panel background.
 pub(crate) const PAGE: Rgba = Rgba::rgb(241, 241, 237);

@@ -6,7 +6,7 @@ use core::fmt;
 use super::config::ConfigAccess;
 use super::idl::Time;
 
-/// Why a callback failed; the GUI shows `reason` (SPEC §1: "A callback fails by returning an
+/// Why a callback failed; the GUI shows `reason` (spec §1: "A callback fails by returning an
 /// error value (with a reason that the GUI shows)").
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ComponentError {
@@ -43,7 +43,7 @@ pub type ReturnCode = Result<(), ComponentError>;
 /// What the execution context tells a callback about the moment it runs.
 ///
 /// Time is simulated: integer nanoseconds since the context was created, advanced only by
-/// ticks (SPEC §6). No component reads a clock.
+/// ticks (spec §6). No component reads a clock.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Tick {
     /// Simulated time of this tick in nanoseconds.
@@ -76,12 +76,12 @@ impl Tick {
 /// Every callback has a default that succeeds and does nothing, so a component overrides
 /// only what it needs — as an OpenRTM component overrides only its `on???` functions.
 /// A callback fails by returning [`ComponentError`]; what happens then is the execution
-/// context's business ([`super::ExecutionContext`], SPEC §1's table).
+/// context's business ([`super::ExecutionContext`], spec §1's table).
 pub trait Component: Any {
     /// The instance name (e.g. `LocalPathPlanning0`).
     fn instance_name(&self) -> &str;
 
-    /// This component's configuration, if it has parameters (SPEC §1 "Configuration
+    /// This component's configuration, if it has parameters (spec §1 "Configuration
     /// parameters"). The context applies `on_activation` parameters just before
     /// [`Component::on_activated`].
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

@@ -1,4 +1,4 @@
-//! A reader for OpenRTM `.conf` files (SPEC §1 Decision; 000/002 §4.1 "変更方法２").
+//! A reader for OpenRTM `.conf` files (spec §1 Decision; 000/002 §4.1 "変更方法２").
 //!
 //! OpenRTM writes them as Java-style properties: `key: value` (or `key = value`), `#` and `!`
 //! comments, blank lines. The keys rtnav understands:

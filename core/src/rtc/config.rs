@@ -1,4 +1,4 @@
-//! Configuration parameters (SPEC §1 "Configuration parameters", 000 §4, 002 §4).
+//! Configuration parameters (spec §1 "Configuration parameters", 000 §4, 002 §4).
 //!
 //! A component declares its parameters once with
 //! [`define_parameters!`](crate::define_parameters): a plain struct the component reads with
@@ -362,6 +362,13 @@ pub trait ConfigAccess {
     /// Copies every requested value to the effective values (the context calls this just
     /// before `on_activated`).
     fn apply_on_activation(&mut self);
+    /// The effective values, in declaration order (kept by the context across an
+    /// activation, to put back if it fails).
+    fn effective_values(&self) -> Vec<f64>;
+    /// Puts back effective values taken by [`ConfigAccess::effective_values`]: an activation
+    /// that failed leaves the old values in effect (spec §1 Decision 0.2). The requested
+    /// values stay, pending until the next activation.
+    fn restore_effective(&mut self, values: &[f64]);
     /// The names of the configuration sets.
     fn set_names(&self) -> Vec<String>;
     /// The active configuration set.
@@ -410,6 +417,16 @@ impl<P: ParameterSet> ConfigAccess for Configuration<P> {
 
     fn apply_on_activation(&mut self) {
         self.effective = self.requested.clone();
+    }
+
+    fn effective_values(&self) -> Vec<f64> {
+        (0..P::SPECS.len()).map(|i| self.effective.get(i)).collect()
+    }
+
+    fn restore_effective(&mut self, values: &[f64]) {
+        for (i, &v) in values.iter().enumerate().take(P::SPECS.len()) {
+            self.effective.put(i, v);
+        }
     }
 
     fn set_names(&self) -> Vec<String> {

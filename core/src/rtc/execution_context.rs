@@ -1,8 +1,8 @@
 //! The execution context: simulated-time ticks drive components through the lifecycle of
-//! SPEC §1's table (seed 003 "実行コンテキスト", "RTCの状態遷移").
+//! spec §1's table (seed 003 "実行コンテキスト", "RTCの状態遷移").
 //!
 //! Time is an integer count of nanoseconds, advanced only by [`ExecutionContext::tick`]: no
-//! clock is read (SPEC §6). The context has a *base rate* (e.g. 1 kHz); each component runs at
+//! clock is read (spec §6). The context has a *base rate* (e.g. 1 kHz); each component runs at
 //! its own rate, whose period must be a whole number of base ticks.
 //!
 //! **Order (documented invariant)**: on base tick `k` (time `k · base_period`), every
@@ -23,7 +23,7 @@
 //! end (OpenRTM's manager calls them, not the context), so attach, initialize and finalize
 //! work in either context state.
 //!
-//! **Decision (callback failures the table leaves open)**, following SPEC §1's table and
+//! **Decision (callback failures the table leaves open)**, following spec §1's table and
 //! OpenRTM-aist's `RTObjectStateMachine`. Every failure is recorded as a [`LifecycleEvent`]
 //! with its reason and kept as [`ExecutionContext::last_error`]; then:
 //!
@@ -231,7 +231,12 @@ impl ExecutionContext {
         Ok(self.slot(id)?.last_error.as_deref())
     }
 
-    /// A component's rate in Hz.
+    /// The component's period in base ticks (it runs at the ticks whose index it divides).
+    pub fn period_of(&self, id: ComponentId) -> Result<u64, LifecycleError> {
+        Ok(self.slot(id)?.period_ticks)
+    }
+
+    /// The component's rate \[Hz\].
     pub fn rate(&self, id: ComponentId) -> Result<f64, LifecycleError> {
         let s = self.slot(id)?;
         Ok(NANOS_PER_SEC / (s.period_ticks * self.base_period_ns) as f64)
@@ -373,16 +378,27 @@ impl ExecutionContext {
     /// parameters are applied first. Returns the state reached.
     pub fn activate(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         self.check(id, Request::Activate, &[LifecycleState::Inactive], true)?;
-        if let Some(cfg) = self.slots[id].component.configuration() {
+        // `on_activation` values take effect for `on_activated`, and stay only if it succeeds
+        // (spec §1 Decision 0.2).
+        let before = self.slots[id].component.configuration().map(|cfg| {
+            let before = cfg.effective_values();
             cfg.apply_on_activation();
-        }
+            before
+        });
         let tick = self.tick_for(id);
         match self.slots[id].component.on_activated(&tick) {
             Ok(()) => {
                 self.slots[id].state = LifecycleState::Active;
                 self.record(id, LifecycleState::Inactive, "on_activated", None);
             }
-            Err(e) => self.abort(id, "on_activated", e),
+            Err(e) => {
+                if let (Some(before), Some(cfg)) =
+                    (before, self.slots[id].component.configuration())
+                {
+                    cfg.restore_effective(&before);
+                }
+                self.abort(id, "on_activated", e);
+            }
         }
         Ok(self.slots[id].state)
     }
@@ -421,7 +437,7 @@ impl ExecutionContext {
     }
 
     /// Any state → Finalized (`on_finalize`, once), with the context Running or Stopped. Only
-    /// `on_finalize` runs (SPEC §1's table). Afterwards every request about the component is
+    /// `on_finalize` runs (spec §1's table). Afterwards every request about the component is
     /// illegal and no callback of it runs again.
     pub fn finalize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         use LifecycleState::*;

@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::TimestampError;
+
 const NANOS_PER_SEC: u64 = 1_000_000_000;
 
 /// `RTC::Time`: seconds and nanoseconds.
@@ -15,25 +17,9 @@ pub struct Time {
     pub nsec: u32,
 }
 
-/// A timestamp whose `nsec` is not below 10⁹ (SPEC §4 Decision 0.2): refused where the
-/// sample enters, by [`Time::checked`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
-#[error(
-    "{what}: timestamp {{sec: {sec}, nsec: {nsec}}} is not valid: nsec must be below 1000000000"
-)]
-pub struct TimestampError {
-    /// Where the sample entered: the port or service (seed names, e.g. `TargetVelocity`,
-    /// `MapUpdate`).
-    pub what: &'static str,
-    /// The seconds given.
-    pub sec: u32,
-    /// The nanoseconds given (≥ 10⁹).
-    pub nsec: u32,
-}
-
 impl Time {
     /// The one check of a timestamp where a sample enters a component (a data port, a
-    /// service call; SPEC §4 Decision 0.2): `nsec` must be below 10⁹. Returns the time
+    /// service call; spec §4 Decision 0.2): `nsec` must be below 10⁹. Returns the time
     /// unchanged, or an error naming `what` (the port or service) and the value. Every
     /// component uses this, so all refuse the same timestamps the same way.
     pub fn checked(self, what: &'static str) -> Result<Self, TimestampError> {
@@ -54,7 +40,7 @@ impl Time {
     }
 
     /// Nanoseconds from `earlier` to `self`, 0 if `earlier` is not before `self`: a time
-    /// difference that never underflows (SPEC §4 Decision 0.2). Exact for any two times,
+    /// difference that never underflows (spec §4 Decision 0.2). Exact for any two times,
     /// valid or not ([`Time::as_nanos`] cannot overflow a `u64`).
     pub fn nanos_since(self, earlier: Self) -> u64 {
         self.as_nanos().saturating_sub(earlier.as_nanos())

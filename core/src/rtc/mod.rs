@@ -1,5 +1,8 @@
-//! The OpenRTM-style component model (SPEC §1, seed 003): lifecycle, execution context,
+//! The OpenRTM-style component model (spec §1, seed 003): lifecycle, execution context,
 //! data ports, IDL types and configuration.
+
+mod error;
+pub use error::{ConfigError, LifecycleError, TimestampError};
 
 mod component;
 mod conf_file;
@@ -16,6 +19,6 @@ pub use config::{
     Reflection,
 };
 pub use execution_context::{ComponentId, ExecutionContext, InputInjection, LifecycleEvent};
-pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity, TimestampError};
+pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
 pub use port::{InPort, OutPort};
 pub use state::{ContextState, LifecycleState, Request};

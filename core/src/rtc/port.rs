@@ -1,4 +1,4 @@
-//! Data ports: `OutPort<T>` writes to every connected `InPort<T>` (SPEC §1 "Ports").
+//! Data ports: `OutPort<T>` writes to every connected `InPort<T>` (spec §1 "Ports").
 //!
 //! **Decision**: an InPort holds the newest value only (OpenRTM's buffer of length one with
 //! overwrite), which is what the seeds' `isNew()` / `read()` pattern needs. Ports are

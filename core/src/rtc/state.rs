@@ -1,4 +1,4 @@
-//! The states and requests of the RT-component lifecycle (SPEC §1, seed 003
+//! The states and requests of the RT-component lifecycle (spec §1, seed 003
 //! "RTCの状態遷移").
 
 use core::fmt;

@@ -1,4 +1,4 @@
-//! The whole system's configuration as one OpenRTM `.conf` text (SPEC §1 "Configuration
+//! The whole system's configuration as one OpenRTM `.conf` text (spec §1 "Configuration
 //! parameters"; the teaching page's export and import).
 //!
 //! **Decision (bundle format)**: the text is a sequence of blocks, one per component that
@@ -36,13 +36,14 @@
 //! file, the component and the problem: an unknown or repeated marker, text before the first
 //! marker, an unknown key, a value that is not a number or out of range.
 
-use crate::errors::{ConfigError, SystemError};
+use crate::errors::{ConfBundleError, ConfigError, SystemError};
 use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet};
 
+use super::events::EventKind;
 use super::kind::ComponentKind;
-use super::runtime::System;
+use super::wiring::Wiring;
 
-/// The bundle's first line, written by [`System::to_conf`].
+/// The first line of a bundle [`Wiring::to_conf`] writes.
 pub const CONF_BUNDLE_HEADER: &str = "# rtnav configuration: one OpenRTM .conf block per \
     component, each after its marker line `# [InstanceName]`.";
 
@@ -67,9 +68,18 @@ struct Block {
 }
 
 /// Loads `conf` into a clone of `config`: whether the block applies, nothing changed.
-fn trial<P: ParameterSet>(config: &Configuration<P>, conf: &ConfFile) -> Result<(), ConfigError> {
-    config.clone().load_conf(conf)
+/// `conf` applied to a copy of `config`: the `dmin` it would leave, if the component has one.
+fn trial<P: ParameterSet>(
+    config: &Configuration<P>,
+    conf: &ConfFile,
+) -> Result<Option<f64>, ConfigError> {
+    let mut copy = config.clone();
+    copy.load_conf(conf)?;
+    Ok(copy.value(DMIN).ok())
 }
+
+/// The parameter both planners hold, one value for the system (spec §3 Decision 0.2).
+const DMIN: &str = "dmin";
 
 /// The 1-based line a `.conf` problem names, if it names one.
 fn problem_line(e: &ConfigError) -> Option<usize> {
@@ -96,7 +106,7 @@ impl Block {
                     .map(|e| e.line)
             })
             .unwrap_or(self.marker_line);
-        SystemError::ConfBlock {
+        ConfBundleError::ConfBlock {
             component: self.kind.instance_name().to_owned(),
             line,
             problem,
@@ -105,10 +115,9 @@ impl Block {
     }
 }
 
-impl System {
-    /// A component's configuration parameters, to read (SPEC §1 "Configuration
-    /// parameters"); the read-only twin of [`System::config_mut`]. MapBuilder and
-    /// MapMaintenance have none.
+impl Wiring {
+    /// A component's configuration parameters, to read (spec §1 "Configuration
+    /// parameters"). MapBuilder and MapMaintenance have none.
     pub fn config(&self, kind: ComponentKind) -> crate::Result<&dyn ConfigAccess> {
         let c = self.execution_context().component_dyn(kind.index())?;
         c.configuration_ref().ok_or_else(|| {
@@ -119,7 +128,17 @@ impl System {
         })
     }
 
-    /// The components that have configuration parameters, in [`ComponentKind::ALL`] order.
+    fn config_mut(&mut self, kind: ComponentKind) -> crate::Result<&mut dyn ConfigAccess> {
+        let c = self.ec_mut().component_dyn_mut(kind.index())?;
+        c.configuration().ok_or_else(|| {
+            SystemError::NoConfiguration {
+                component: kind.name().to_owned(),
+            }
+            .into()
+        })
+    }
+
+    /// The components that have configuration parameters, in attachment order.
     pub fn configured_components(&self) -> Vec<ComponentKind> {
         ComponentKind::ALL
             .into_iter()
@@ -127,9 +146,42 @@ impl System {
             .collect()
     }
 
-    /// The whole configuration as one OpenRTM `.conf` text (the module's bundle format):
-    /// [`CONF_BUNDLE_HEADER`], then per component with parameters a blank line, its marker
-    /// `# [InstanceName]` and its own `.conf` text. Every configuration set is written.
+    /// Sets one parameter (spec §1: `always` at once, `on_activation` pending until the next
+    /// activation; out of range refused, the old value stays). `dmin` is one value for the
+    /// system (spec §3 Decision 0.2): setting LocalPathPlanning's or GlobalPathPlanning's
+    /// sets both, checked on both first.
+    pub fn set_param(&mut self, kind: ComponentKind, name: &str, value: f64) -> crate::Result<()> {
+        let kinds: &[ComponentKind] = if name == DMIN && kind.holds_dmin() {
+            &ComponentKind::DMIN_HOLDERS
+        } else {
+            core::slice::from_ref(&kind)
+        };
+        for &k in kinds {
+            let config = self.config(k)?;
+            let spec = config
+                .specs()
+                .iter()
+                .find(|s| s.name == name)
+                .ok_or_else(|| ConfigError::UnknownParameter {
+                    name: name.to_owned(),
+                    line: None,
+                })?;
+            spec.check(value, None)?;
+        }
+        for &k in kinds {
+            self.config_mut(k)?.set(name, value)?;
+        }
+        self.fact(EventKind::ParameterSet {
+            component: kind.name().to_owned(),
+            name: name.to_owned(),
+            value,
+        });
+        self.check_clearance();
+        Ok(())
+    }
+
+    /// The whole configuration as one OpenRTM `.conf` text: a block per component with
+    /// parameters, in attachment order (module documentation).
     pub fn to_conf(&self) -> String {
         let mut out = String::from(CONF_BUNDLE_HEADER);
         out.push('\n');
@@ -143,13 +195,13 @@ impl System {
         out
     }
 
-    /// Applies a configuration bundle (the module's format; [`System::to_conf`] writes one).
-    /// All-or-nothing: every block is checked on a clone of its configuration first; on any
-    /// error nothing changes and the error names the line (of the whole text), the component
-    /// and the problem. Components without a block keep their configuration. `always`
-    /// parameters take effect at once, `on_activation` ones at the next activation.
+    /// Reads a bundle (module documentation): every block is checked on a copy first, then
+    /// all are applied, or none. `dmin` stays one value (spec §3 Decision 0.2): a block that
+    /// sets one planner's `dmin` sets the other's too, and blocks that give the two planners
+    /// different values are refused, naming both.
     pub fn load_conf(&mut self, text: &str) -> crate::Result<()> {
         let blocks = self.split_conf(text)?;
+        let mut dmins: Vec<(ComponentKind, f64)> = Vec::new();
         for block in &blocks {
             let checked = match block.kind {
                 ComponentKind::PhysicsSim => trial(self.physics().config(), &block.conf),
@@ -163,20 +215,40 @@ impl System {
                 }
                 ComponentKind::DriveControl => trial(self.drive_control().config(), &block.conf),
                 // `split_conf` keeps only components with parameters.
-                ComponentKind::MapBuilder | ComponentKind::MapMaintenance => Ok(()),
+                ComponentKind::MapBuilder | ComponentKind::MapMaintenance => Ok(None),
             };
-            checked.map_err(|e| block.error(e))?;
+            if let Some(dmin) = checked.map_err(|e| block.error(e))? {
+                dmins.push((block.kind, dmin));
+            }
+        }
+        if let [(a, da), (b, db)] = dmins[..]
+            && da.to_bits() != db.to_bits()
+        {
+            return Err(SystemError::DminMismatch {
+                first: a.instance_name(),
+                first_value: da,
+                second: b.instance_name(),
+                second_value: db,
+            }
+            .into());
         }
         // Commit: the same blocks on the same configurations, so each succeeds as its trial did.
         for block in &blocks {
             let config = self.config_mut(block.kind)?;
             config.load_conf(&block.conf).map_err(|e| block.error(e))?;
         }
+        if let Some(&(_, dmin)) = dmins.first() {
+            for kind in ComponentKind::DMIN_HOLDERS {
+                self.config_mut(kind)?.set(DMIN, dmin)?;
+            }
+        }
+        self.fact(EventKind::ConfigurationLoaded {
+            components: blocks.len(),
+        });
+        self.check_clearance();
         Ok(())
     }
 
-    /// Splits a bundle at its markers and parses each block, with line numbers of the whole
-    /// text.
     fn split_conf(&self, text: &str) -> crate::Result<Vec<Block>> {
         let lines: Vec<&str> = text.lines().collect();
         // (kind, 0-based marker index) of each block, in file order.
@@ -188,7 +260,7 @@ impl System {
                     .into_iter()
                     .find(|k| k.instance_name() == name || k.name() == name)
                     .filter(|&k| self.config(k).is_ok())
-                    .ok_or_else(|| SystemError::ConfUnknownComponent {
+                    .ok_or_else(|| ConfBundleError::ConfUnknownComponent {
                         line,
                         name: name.to_owned(),
                         expected: self
@@ -199,7 +271,7 @@ impl System {
                             .join(", "),
                     })?;
                 if let Some(&(_, first)) = starts.iter().find(|(k, _)| *k == kind) {
-                    return Err(SystemError::ConfDuplicateComponent {
+                    return Err(ConfBundleError::ConfDuplicateComponent {
                         line,
                         component: kind.instance_name().to_owned(),
                         first: first + 1,
@@ -210,7 +282,7 @@ impl System {
             } else if starts.is_empty() {
                 let t = raw.trim();
                 if !(t.is_empty() || t.starts_with('#') || t.starts_with('!')) {
-                    return Err(SystemError::ConfOutsideBlock {
+                    return Err(ConfBundleError::ConfOutsideBlock {
                         line,
                         text: raw.to_owned(),
                     }

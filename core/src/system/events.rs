@@ -46,6 +46,8 @@ pub enum EventKind {
         goal: Pose,
         /// Forward or backward.
         direction: Direction,
+        /// Whether the robot was placed at the start (else: a new goal from where it is).
+        placed: bool,
     },
     /// GlobalPathPlanning sent a route (`GlobalPathCourse`).
     GlobalPlan {
@@ -53,6 +55,11 @@ pub enum EventKind {
         cells: usize,
         /// Its length \[m\].
         length: f64,
+        /// Why it was planned: `Requested`, `MapChanged` (the route was blocked) or
+        /// `DminChanged`.
+        reason: String,
+        /// Steps at its start that lead out of the `dmin` zone (spec §3 Decision 0.2).
+        escaped: usize,
     },
     /// LocalPathPlanning sent a grid path and control points (000 §5.2.4.13).
     LocalPlanSent {
@@ -62,6 +69,8 @@ pub enum EventKind {
         control_points: usize,
         /// Whether a potential-field plan made it (else: the global path as received).
         replanned: bool,
+        /// Steps at its start that lead out of the `dmin` zone (spec §3 Decision 0.2).
+        escaped: usize,
     },
     /// A planner could not make a plan (000 §5.2.4.13's failure notice).
     PlanningFailed {
@@ -70,7 +79,7 @@ pub enum EventKind {
         /// Why.
         reason: String,
     },
-    /// The robot touched an obstacle (SPEC §5): it stops and the physics goes to Error.
+    /// The robot touched an obstacle (spec §5): it stops and the physics goes to Error.
     Bump {
         /// The physics' report.
         report: BumpReport,
@@ -83,8 +92,11 @@ pub enum EventKind {
         position_error: f64,
         /// Heading error \[rad\].
         heading_error: f64,
+        /// Heading error \[rad\] when the robot reached the goal position, before its final
+        /// turn: what the posture term of the plan achieved.
+        approach_heading_error: f64,
     },
-    /// A component's callback failed (SPEC §1: the reason the GUI shows).
+    /// A component's callback failed (spec §1: the reason the GUI shows).
     ComponentError {
         /// The component's instance name.
         component: String,
@@ -106,11 +118,54 @@ pub enum EventKind {
     SafeMode,
     /// `Clear` was called: paths and goal dropped.
     Cleared,
-    /// DriveControl was activated with no path while a goal was held: the goal was sent
-    /// again from where the robot stands (see `System::activate`).
-    GoalResent {
-        /// Why sending it again was refused, if it was.
-        refused: Option<String>,
+    /// DriveControl's clearance check stopped the robot short of an obstacle (spec §5).
+    SafetyStop {
+        /// Free travel left along the commanded arc \[m\].
+        ahead: f64,
+        /// Whether LocalPathPlanning took the request for a new plan.
+        replanning: bool,
+    },
+    /// A component's next execution was made to fail (the page's "Inject fault").
+    FaultInjected {
+        /// The component's instance name.
+        component: String,
+        /// The reason it will fail with.
+        reason: String,
+    },
+    /// A configuration parameter was set (spec §1).
+    ParameterSet {
+        /// The component.
+        component: String,
+        /// The parameter.
+        name: String,
+        /// Its new value.
+        value: f64,
+    },
+    /// MotorControl's `SetPDGain` (002 §3.2.2.1 (1)).
+    GainsSet {
+        /// `PGainL`.
+        p_l: f64,
+        /// `PGainR`.
+        p_r: f64,
+        /// `DGainL`.
+        d_l: f64,
+        /// `DGainR`.
+        d_r: f64,
+    },
+    /// A configuration bundle was loaded (spec §1).
+    ConfigurationLoaded {
+        /// How many component blocks it had.
+        components: usize,
+    },
+    /// The values let the body touch an obstacle although the planners keep `dmin`
+    /// (spec §3 Decision 0.2): `dmin − GridSize/2 < radiusOfBodyArea`.
+    ClearanceWarning {
+        /// `dmin` \[m\].
+        dmin: f64,
+        /// The map's `GridSize` \[m\].
+        grid_size: f64,
+        /// MotorControl's `radiusOfBodyArea` \[m\].
+        body_radius: f64,
     },
     /// A request the system made on its own was refused (a scenario's timed goal, a replan
     /// after a parameter change); the previous state stays.
@@ -132,8 +187,13 @@ pub enum EventKind {
 
 impl fmt::Display for SystemEvent {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "[{:9.3} s] ", self.time_ns as f64 * 1e-9)?;
-        match &self.kind {
+        write!(f, "[{:9.3} s] {}", self.time_ns as f64 * 1e-9, self.kind)
+    }
+}
+
+impl fmt::Display for EventKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
             EventKind::MapLoaded {
                 width,
                 height,
@@ -146,9 +206,15 @@ impl fmt::Display for SystemEvent {
                 start,
                 goal,
                 direction,
+                placed,
             } => write!(
                 f,
-                "goal set: ({:.2}, {:.2}, {:.1}°) → ({:.2}, {:.2}, {:.1}°), {direction:?}",
+                "{}: ({:.2}, {:.2}, {:.1}°) → ({:.2}, {:.2}, {:.1}°), {direction:?}",
+                if *placed {
+                    "start and goal set"
+                } else {
+                    "new goal"
+                },
                 start.x,
                 start.y,
                 start.theta.to_degrees(),
@@ -156,18 +222,40 @@ impl fmt::Display for SystemEvent {
                 goal.y,
                 goal.theta.to_degrees()
             ),
-            EventKind::GlobalPlan { cells, length } => {
-                write!(f, "global plan: {cells} cells, {length:.2} m")
+            EventKind::GlobalPlan {
+                cells,
+                length,
+                reason,
+                escaped,
+            } => {
+                write!(f, "global plan: {cells} cells, {length:.2} m")?;
+                match reason.as_str() {
+                    "MapChanged" => f.write_str(" (the map changed under the route)")?,
+                    "DminChanged" => f.write_str(" (dmin changed)")?,
+                    _ => {}
+                }
+                escape(f, *escaped)
+            }
+            EventKind::LocalPlanSent { cells: 0, .. } => {
+                f.write_str("empty path sent: the robot stops")
             }
             EventKind::LocalPlanSent {
                 cells,
                 control_points,
                 replanned,
-            } => write!(
-                f,
-                "local plan sent: {cells} cells, {control_points} control points{}",
-                if *replanned { " (replanned)" } else { "" }
-            ),
+                escaped,
+            } => {
+                write!(
+                    f,
+                    "{} sent: {cells} cells, {control_points} control points",
+                    if *replanned {
+                        "local plan"
+                    } else {
+                        "global path"
+                    }
+                )?;
+                escape(f, *escaped)
+            }
             EventKind::PlanningFailed { planner, reason } => {
                 write!(f, "planning failed ({planner}): {reason}")
             }
@@ -176,14 +264,17 @@ impl fmt::Display for SystemEvent {
                 pose,
                 position_error,
                 heading_error,
+                approach_heading_error,
             } => write!(
                 f,
-                "arrived at ({:.3}, {:.3}, {:.1}°): {:.3} m and {:.2}° from the goal",
+                "arrived at ({:.3}, {:.3}, {:.1}°): {:.3} m and {:.2}° from the goal \
+                 (it came in {:.1}° off the goal heading)",
                 pose.x,
                 pose.y,
                 pose.theta.to_degrees(),
                 position_error,
-                heading_error.to_degrees()
+                heading_error.to_degrees(),
+                approach_heading_error.to_degrees()
             ),
             EventKind::ComponentError {
                 component,
@@ -197,15 +288,39 @@ impl fmt::Display for SystemEvent {
             } => write!(f, "{component}: {from} → {to}"),
             EventKind::SafeMode => f.write_str("SafeMode: halt"),
             EventKind::Cleared => f.write_str("Clear: paths and goal dropped"),
-            EventKind::GoalResent { refused: None } => f.write_str(
-                "DriveControl had no path after its activation: the goal was sent again",
+            EventKind::SafetyStop { ahead, replanning } => write!(
+                f,
+                "safety stop: obstacle {ahead:.2} m ahead{}",
+                if *replanning {
+                    ", planning again from here"
+                } else {
+                    ""
+                }
             ),
-            EventKind::GoalResent { refused: Some(r) } => {
-                write!(
-                    f,
-                    "DriveControl has no path; sending the goal again was refused: {r}"
-                )
+            EventKind::FaultInjected { component, reason } => {
+                write!(f, "{component}: its next execution will fail ({reason})")
             }
+            EventKind::ParameterSet {
+                component,
+                name,
+                value,
+            } => write!(f, "{component}.{name} = {value}"),
+            EventKind::GainsSet { p_l, p_r, d_l, d_r } => {
+                write!(f, "MotorControl SetPDGain({p_l}, {p_r}, {d_l}, {d_r})")
+            }
+            EventKind::ConfigurationLoaded { components } => {
+                write!(f, "configuration loaded: {components} component blocks")
+            }
+            EventKind::ClearanceWarning {
+                dmin,
+                grid_size,
+                body_radius,
+            } => write!(
+                f,
+                "warning: the body can touch obstacles: dmin {dmin} m − half a cell \
+                 ({:.3} m) is less than radiusOfBodyArea {body_radius} m",
+                grid_size / 2.0
+            ),
             EventKind::RequestRefused { request, reason } => {
                 write!(f, "{request} was refused: {reason}")
             }
@@ -214,4 +329,12 @@ impl fmt::Display for SystemEvent {
             }
         }
     }
+}
+
+/// ", escaping the dmin zone in N steps" when a plan starts inside it.
+fn escape(f: &mut fmt::Formatter<'_>, steps: usize) -> fmt::Result {
+    if steps > 0 {
+        write!(f, ", escaping the dmin zone in {steps} steps")?;
+    }
+    Ok(())
 }

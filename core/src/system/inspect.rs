@@ -1,5 +1,5 @@
 //! The cell inspector (the teaching page's hover panel and `rtnav inspect`): what the map and
-//! LocalPathPlanning's potential field say about one cell (SPEC §2 obstacle distance, SPEC §3
+//! LocalPathPlanning's potential field say about one cell (spec §2 obstacle distance, spec §3
 //! step 4 / 000 §5.2.4.9 potential `G = G(parent) + R + A + P`).
 
 use serde::Serialize;
@@ -8,7 +8,7 @@ use crate::errors::SystemError;
 use crate::local::CellState;
 use crate::map;
 
-use super::runtime::System;
+use super::wiring::Wiring;
 
 /// Everything about one map cell, as the inspector shows it (JSON: `{x, y, occupancy,
 /// obstacle_distance, impassable, field}`).
@@ -18,13 +18,13 @@ pub struct CellInspection {
     pub x: i64,
     /// Row.
     pub y: i64,
-    /// The map's value: 0 free, 1 obstacle (SPEC §2).
+    /// The map's value: 0 free, 1 obstacle (spec §2).
     pub occupancy: u8,
-    /// Metres from the cell's centre to the nearest obstacle cell's centre (SPEC §2; 0 on an
+    /// Metres from the cell's centre to the nearest obstacle cell's centre (spec §2; 0 on an
     /// obstacle cell).
     pub obstacle_distance: f64,
     /// Whether the cell is within LocalPathPlanning's effective `dmin` of an obstacle
-    /// ([`map::within_dmin`], SPEC §3 step 4: impassable).
+    /// ([`map::within_dmin`], spec §3 step 4: impassable).
     pub impassable: bool,
     /// The potential field's view of the cell; `None` while LocalPathPlanning has no field
     /// for this map.
@@ -61,7 +61,7 @@ fn state_name(s: CellState) -> &'static str {
     }
 }
 
-impl System {
+impl Wiring {
     /// What the current map and LocalPathPlanning's latest potential field say about cell
     /// `(x, y)`. Errors: no map loaded, or a cell outside the map (named).
     pub fn inspect_cell(&self, x: i64, y: i64) -> crate::Result<CellInspection> {

@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::errors::SystemError;
 
-/// One of the system's components (SPEC §0). The order of [`ComponentKind::ALL`] is the
+/// One of the system's components (spec §0). The order of [`ComponentKind::ALL`] is the
 /// attachment order, which is the order they run in a tick (see `crate::system`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum ComponentKind {
@@ -49,7 +49,15 @@ impl ComponentKind {
         Self::LocalPathPlanning,
     ];
 
-    /// The component's name as in the seeds and SPEC §0 (e.g. `LocalPathPlanning`).
+    /// The components that hold `dmin`: one value for the system (spec §3 Decision 0.2).
+    pub const DMIN_HOLDERS: [Self; 2] = [Self::LocalPathPlanning, Self::GlobalPathPlanning];
+
+    /// Whether the component holds `dmin` ([`ComponentKind::DMIN_HOLDERS`]).
+    pub fn holds_dmin(self) -> bool {
+        Self::DMIN_HOLDERS.contains(&self)
+    }
+
+    /// The component's name as in the seeds and spec §0 (e.g. `LocalPathPlanning`).
     pub fn name(self) -> &'static str {
         match self {
             Self::MapBuilder => "MapBuilder",

@@ -1,7 +1,21 @@
-//! The whole system: every component wired as in SPEC §0, in one execution context at the
-//! SPEC §6 rates; the GUI-facing API; scenarios; telemetry and the trace hash.
+//! The whole system: every component wired as in spec §0, in one execution context at the
+//! spec §6 rates, taking [`Input`]s; scenarios, their timeline and the one set-up builder;
+//! the page's session.
 //!
-//! # Wiring (SPEC §0)
+//! # Parts
+//!
+//! | part | holds | may not know |
+//! | --- | --- | --- |
+//! | [`Wiring`] (`wiring.rs`) | the execution context, the components, their connections, the service calls between ticks; each tick returns a [`Report`] of facts | the mission, the record, any user interface |
+//! | [`Mission`] (`mission.rs`) | start, goal, direction, route, epochs, arrival, halt — followed from the facts | the record; it never calls a component |
+//! | [`Record`] (`record.rs`) | the event log, totals, trail, clearance, telemetry and trace hash — written from the reports | it never changes anything it observes |
+//! | [`System`] (`robot.rs`) | the three composed: [`System::apply`] (the one interpreter of [`Input`]), [`System::step`], [`System::run_until`] | clocks, scripts, previews, drawing buffers |
+//! | [`Timeline`] (`timeline.rs`) | a scenario's timed events, counted from the drive's start | — |
+//! | [`setup::build`] (`setup.rs`) | the one set-up builder (runner, renderer, page, tests) | — |
+//! | [`ScenarioRun`] (`runner.rs`) | a headless run to its outcome | — |
+//! | [`Session`] (`session.rs`) | the user interface's one boundary: clock, set-up record, share links, read-outs | — |
+//!
+//! # Wiring (spec §0)
 //!
 //! Data ports, connected with `OutPort::connect`:
 //!
@@ -10,23 +24,23 @@
 //! | PhysicsSim `angle`, `position` | MotorControl `InCurrentWheelAngle`, `InSimulatedPosition` |
 //! | MotorControl `Torque` | PhysicsSim `torque` |
 //! | MotorControl `OutCurrentWheelAngle`, `OutSimulatedPositionToLocalization` | Localization `InCurrentWheelAngle`, `InSimulatedPosition` |
-//! | Localization `OutCurrentPosition` | LocalPathPlanning and DriveControl `InCurrentPosition` |
+//! | Localization `OutCurrentPosition` | LocalPathPlanning, DriveControl and GlobalPathPlanning `InCurrentPosition` |
 //! | LocalPathPlanning `DriveCons` | DriveControl `InControlPoints` |
 //! | DriveControl `TargetVelocity` | MotorControl `TargetVelocity` |
 //! | DriveControl `OutDeviating` | LocalPathPlanning `InDeviating` |
 //!
-//! The seeds' service calls are made by the system between ticks. It holds an `InPort`
-//! (a *bridge*) on each port that stands for a service call or a GUI notice, reads them after
-//! every tick and after every GUI request, and calls the services:
+//! The seeds' service calls are made by the wiring between ticks. It holds an `InPort` (a
+//! *bridge*) on each port that stands for a service call or a notice, reads them after every
+//! tick and after every request, and calls the services:
 //!
-//! | bridge on | service calls / event |
+//! | bridge on | service calls / fact |
 //! | --- | --- |
 //! | MapBuilder `SetMap` | `SetMap` on MapMaintenance, GlobalPathPlanning, LocalPathPlanning, PhysicsSim |
 //! | MapMaintenance `MapUpdate` | `MapUpdate` on GlobalPathPlanning, PhysicsSim, LocalPathPlanning |
 //! | GlobalPathPlanning `GlobalPathCourse` | `GlobalPathCourse` on LocalPathPlanning |
-//! | GlobalPathPlanning `PlanningFailure`, LocalPathPlanning `InventGUIConsFailure` | planning-failed event |
-//! | LocalPathPlanning `InventGUICons` | local-plan-sent event |
-//! | PhysicsSim `bump` | MotorControl `Stop`, bump event |
+//! | GlobalPathPlanning `PlanningFailure`, LocalPathPlanning `InventGUIConsFailure` | planning-failed fact |
+//! | LocalPathPlanning `InventGUICons` | path-sent fact |
+//! | PhysicsSim `bump` | MotorControl `Stop`, bump fact |
 //!
 //! # Order (data-flow order)
 //!
@@ -36,80 +50,50 @@
 //! tick, MotorControl reads the fresh wheel angles and pose and sends the new torque,
 //! Localization publishes the fresh pose), GlobalPathPlanning, LocalPathPlanning (10 Hz: they
 //! plan from the fresh pose), DriveControl (50 Hz: it follows the newest control points from
-//! the fresh pose; its velocity reaches MotorControl on the next tick). A service call made by
-//! the system after tick `k` is seen by the component on its next run.
+//! the fresh pose; its velocity reaches MotorControl on the next tick). A service call made
+//! after tick `k` is seen by the component on its next run.
 //!
-//! # Rates (SPEC §6)
+//! # Rates (spec §6)
 //!
 //! [`Rates`]: physics, MotorControl, Localization 1 kHz; DriveControl 50 Hz; local and
 //! global planning 10 Hz; MapBuilder and MapMaintenance 10 Hz; telemetry 50 Hz. The base
 //! tick is the highest rate (1 ms by default).
 //!
-//! # The GUI-facing API (what InventGUI did)
-//!
-//! - Map: [`System::load_map`], [`System::load_map_from`] (a file through a
-//!   [`FileResolver`]; a bad file leaves the old map), [`System::map_update`] /
-//!   [`System::set_cells`] (checked completely, atomic), [`System::schedule_map_update`].
-//! - Goals: [`System::set_position`] (`SetPosition`: places the robot at the start in the
-//!   physics and Localization; refused while driving), [`System::set_goal`] (a new goal from
-//!   where the robot is, also while driving), [`System::clear`], [`System::safe_mode`].
-//!   Bad input (NaN, outside the map, within `dmin` of an obstacle) is refused with
-//!   LocalPathPlanning's error and changes nothing.
-//! - Lifecycle: activate / deactivate / reset of all components ([`System::activate_all`],
-//!   [`System::deactivate_all`], [`System::reset_all`]) or one ([`System::activate`], …),
-//!   [`System::inject_fault`], [`System::set_rate`]; [`System::state`] and
-//!   [`System::component_info`] (state, last error, rate, status); each component's
-//!   parameters as `&mut dyn ConfigAccess` ([`System::config_mut`]).
-//! - Teaching tools: [`System::config`] (read-only twin of `config_mut`), the whole
-//!   configuration as one OpenRTM `.conf` text ([`System::to_conf`], [`System::load_conf`],
-//!   all-or-nothing), [`System::inspect_cell`] (map and potential field at one cell).
-//! - Running: [`System::step`] (base ticks), [`System::run_for`], [`System::run_until`];
-//!   [`System::preview`] plans without driving (the page's first frame, `rtnav render`).
-//! - Output: [`System::events`] ([`SystemEvent`], stamped with the simulated time of the tick
-//!   that caused them), [`System::telemetry`] ([`TelemetrySample`] at the telemetry rate, a
-//!   bounded history, and the SHA-256 trace hash over every sample), [`System::stats`]
-//!   (path length, exact minimum clearance, plans, bumps), `System::scene` (feature
-//!   `render`: the renderer's `Scene` of the current state).
-//!
 //! A bump fails the physics' `on_execute` with the bump report as the reason: the physics
-//! goes to Error (the robot stands still), MotorControl gets `Stop`, the system's state is
-//! Error; [`System::reset_all`] brings every component back to Inactive.
-//!
-//! # Scenarios
-//!
-//! [`Scenario`] files (`fixtures/scenarios/*.json`) give the map, start and goal,
-//! configuration, rates, timed events and the expected outcome; [`ScenarioRun`] /
-//! [`run_scenario`] drive the system to the outcome and report ([`ScenarioReport`]).
+//! goes to Error (the robot stands still), MotorControl gets `Stop`; `Input::ResetAll`
+//! brings every component back to Inactive.
 
-mod clearance;
-mod events;
-mod kind;
-// --- teaching tools (branch `teachcore`): the configuration bundle, the cell inspector ---
 mod conf_bundle;
+mod error;
+mod events;
+mod input;
 mod inspect;
-pub use conf_bundle::CONF_BUNDLE_HEADER;
-pub use inspect::{CellInspection, FieldInspection};
-
+mod kind;
+mod mission;
 mod rates;
+mod record;
+mod robot;
 mod runner;
-mod runtime;
 mod scenario;
-#[cfg(feature = "render")]
-mod scene;
-mod script;
 mod session;
+pub mod setup;
+mod status;
 mod telemetry;
+mod timeline;
+mod wiring;
 
-pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound, could_be_below};
+pub use conf_bundle::CONF_BUNDLE_HEADER;
+pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
+pub use input::Input;
+pub use inspect::{CellInspection, FieldInspection};
 pub use kind::ComponentKind;
+pub use mission::Mission;
 pub use rates::Rates;
+pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
+pub use robot::System;
 pub use runner::{
-    ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, run_scenario,
-};
-pub use runtime::{
-    ComponentInfo, EVENT_CAPACITY, PLAN_TIMES_CAPACITY, RunStats, System, SystemState,
-    TRAIL_CAPACITY,
+    ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,
 };
 #[cfg(not(target_arch = "wasm32"))]
 pub use scenario::DirResolver;
@@ -118,7 +102,11 @@ pub use scenario::{
     PoseSpec, Scenario, ScenarioEvent, UnknownSpec,
 };
 pub use session::{
-    ComponentParameters, MAX_PLOT_SECONDS, MAX_SPEED, MAX_STEP_MS, MIN_SPEED, PREVIEW_SECONDS,
-    ParameterView, PlotWindow, Session, Setup, TUNABLE,
+    ComponentParameters, MAX_PLOT_SECONDS, MAX_SPEED, MAX_STEP_MS, MIN_SPEED, ParameterView,
+    PlotWindow, Session, TOKEN_INFLATE_LIMIT, TUNABLE,
 };
+pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
+pub use status::{ComponentInfo, STILL, Status, SystemState};
 pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
+pub use timeline::Timeline;
+pub use wiring::{Report, Wiring};

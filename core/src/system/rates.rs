@@ -1,4 +1,4 @@
-//! The execution rates of the system's components (SPEC §6: "motor and physics 1 kHz, drive
+//! The execution rates of the system's components (spec §6: "motor and physics 1 kHz, drive
 //! control 50 Hz, local planning 10 Hz; rates are configuration").
 
 use serde::{Deserialize, Serialize};
@@ -16,7 +16,7 @@ fn hz_10() -> f64 {
 }
 
 /// Rates in Hz of every component and of the telemetry sampling. Read from JSON with
-/// unknown keys refused; a missing key takes its default (SPEC §6).
+/// unknown keys refused; a missing key takes its default (spec §6).
 ///
 /// The execution context's base rate is the highest of them; every other rate's period
 /// must be a whole number of base ticks (checked when the system is built), and the physics'

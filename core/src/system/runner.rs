@@ -1,23 +1,26 @@
 //! The scenario runner: builds the system from a [`Scenario`], drives it to its outcome and
-//! reports what happened (SPEC §6: the same scenario gives the same trace bit for bit).
+//! reports what happened (spec §6: the same scenario gives the same trace bit for bit).
 
 use core::fmt;
 
 use serde::Serialize;
 
 use super::events::EventKind;
+use super::input::Input;
 use super::kind::ComponentKind;
-use super::runtime::{System, SystemState};
-use super::scenario::{Expectation, FileResolver, OutcomeKind, Scenario, ScenarioEvent};
+use super::robot::System;
+use super::scenario::{Expectation, FileResolver, OutcomeKind, Scenario};
+use super::setup::{self, BuildOptions, Setup};
+use super::status::{STILL, SystemState};
+use super::timeline::{Timeline, secs_to_ns};
 use crate::errors::SystemError;
 use crate::interfaces::Pose;
 use crate::motion::{DrivePhase, angle_diff};
 
 /// How long the robot must stand still, without a path, after a planning failure (or
-/// SafeMode / Clear) for the run to end there \[ns\].
-pub const STILL_NS: u64 = 1_000_000_000;
-/// Below this speed \[m/s\] and turn rate \[rad/s\] the robot stands still.
-const STILL_SPEED: f64 = 1e-3;
+/// SafeMode / Clear) for the run to end there \[ns\]: long enough for LocalPathPlanning's
+/// retries every second (spec §3 Decision 0.2) to have been tried twice.
+pub const STILL_NS: u64 = 2_500_000_000;
 /// Arrival: the heading within this many degrees of the goal's.
 pub const ARRIVAL_HEADING_DEG: f64 = 10.0;
 
@@ -62,6 +65,9 @@ pub struct ScenarioReport {
     pub position_error: f64,
     /// Heading error at the end \[°\].
     pub heading_error_deg: f64,
+    /// Heading error when the robot reached the goal position, before its final turn \[°\]
+    /// (NaN if it never did): what the plan's posture term achieved.
+    pub approach_heading_deg: f64,
     /// The map's cell size \[m\].
     pub grid_size: f64,
     /// Telemetry samples taken.
@@ -162,6 +168,13 @@ impl fmt::Display for ScenarioReport {
         } else {
             writeln!(f, "min clearance   - (the robot did not run)")?;
         }
+        if self.approach_heading_deg.is_finite() {
+            writeln!(
+                f,
+                "approach        {:.2}° off the goal heading before the final turn",
+                self.approach_heading_deg
+            )?;
+        }
         writeln!(
             f,
             "final pose      ({:.3}, {:.3}, {:.2}°), {:.4} m and {:.2}° from the goal",
@@ -175,45 +188,43 @@ impl fmt::Display for ScenarioReport {
     }
 }
 
-/// A scenario being run: the system, the events still to come, the outcome once known.
+/// A scenario being run: the system, its timeline, the outcome once known.
 #[derive(Debug)]
 pub struct ScenarioRun {
     scenario: Scenario,
     system: System,
-    /// Non-map events still to apply, with their times \[ns\].
-    pending: Vec<(u64, ScenarioEvent)>,
+    timeline: Timeline,
     limit_ns: u64,
     outcome: Option<Outcome>,
     event_cursor: u64,
-    failure: Option<String>,
+    refused: Option<String>,
     still_since: Option<u64>,
 }
 
-fn secs_to_ns(s: f64) -> u64 {
-    libm::round(s * 1e9) as u64
-}
-
 impl ScenarioRun {
-    /// Builds the system for `scenario`: rates, configuration overrides, the map (through
-    /// `resolver`), start and goal, the timed map updates queued on MapMaintenance; then
-    /// activates every component.
+    /// Builds the set-up of `scenario` ([`setup::build`], files through `resolver`), then
+    /// activates every component: the drive starts, and with it the scenario's timeline.
     pub fn new(scenario: &Scenario, resolver: &dyn FileResolver) -> crate::Result<Self> {
-        let mut system = System::from_scenario(scenario, resolver)?;
-        let pending = scenario
-            .events
-            .iter()
-            .filter(|e| !matches!(e, ScenarioEvent::MapUpdate { .. }))
-            .map(|e| (secs_to_ns(e.at()), e.clone()))
-            .collect();
-        system.activate_all();
+        Self::with_setup(scenario, resolver, &Setup::of(scenario))
+    }
+
+    /// As [`ScenarioRun::new`], with `setup`'s changes to the scenario.
+    pub fn with_setup(
+        scenario: &Scenario,
+        resolver: &dyn FileResolver,
+        setup: &Setup,
+    ) -> crate::Result<Self> {
+        let mut system = setup::build(scenario, resolver, setup, BuildOptions::default())?;
+        let start_ns = system.time_ns();
+        system.apply(&Input::ActivateAll)?;
         Ok(Self {
             scenario: scenario.clone(),
             system,
-            pending,
-            limit_ns: secs_to_ns(scenario.time_limit),
+            timeline: Timeline::new(&scenario.events),
+            limit_ns: start_ns + secs_to_ns(scenario.time_limit),
             outcome: None,
             event_cursor: 0,
-            failure: None,
+            refused: None,
             still_since: None,
         })
     }
@@ -247,11 +258,6 @@ impl ScenarioRun {
         &self.system
     }
 
-    /// The system, mutably (e.g. to change the telemetry capacity).
-    pub fn system_mut(&mut self) -> &mut System {
-        &mut self.system
-    }
-
     /// The outcome, once the run has ended.
     pub fn outcome(&self) -> Option<&Outcome> {
         self.outcome.as_ref()
@@ -259,138 +265,33 @@ impl ScenarioRun {
 
     /// Runs at most `max_ticks` base ticks, fewer if the run ends. Returns the outcome once
     /// it is known.
-    pub fn advance(&mut self, max_ticks: u64) -> crate::Result<Option<&Outcome>> {
+    pub fn advance(&mut self, max_ticks: u64) -> Option<&Outcome> {
         for _ in 0..max_ticks {
             if self.outcome.is_some() {
                 break;
             }
-            self.apply_due_events()?;
-            self.system.step(1);
-            self.observe();
+            self.timeline.run(&mut self.system, 1);
+            self.outcome = judge(
+                &self.system,
+                &mut self.event_cursor,
+                &mut self.refused,
+                &mut self.still_since,
+                self.limit_ns,
+            );
         }
-        Ok(self.outcome.as_ref())
+        self.outcome.as_ref()
     }
 
     /// Runs to the end.
-    pub fn run_to_end(&mut self) -> crate::Result<&Outcome> {
-        while self.outcome.is_none() {
-            self.advance(1_000)?;
+    pub fn run_to_end(&mut self) -> &Outcome {
+        loop {
+            if self.advance(1_000).is_some() {
+                break;
+            }
         }
         match &self.outcome {
-            Some(o) => Ok(o),
+            Some(o) => o,
             None => unreachable!("the loop ends with an outcome"),
-        }
-    }
-
-    fn apply_due_events(&mut self) -> crate::Result<()> {
-        let now = self.system.time_ns();
-        while let Some((at, _)) = self.pending.first()
-            && *at <= now
-        {
-            let (_, e) = self.pending.remove(0);
-            match e {
-                ScenarioEvent::Goal {
-                    goal, direction, ..
-                } => {
-                    // A refused goal is part of the story (an event), not an abort.
-                    if let Err(err) = self.system.set_goal(goal.pose(), direction.direction()) {
-                        self.failure = Some(format!("SetPosition: {err}"));
-                    } else {
-                        self.failure = None;
-                    }
-                }
-                ScenarioEvent::SafeMode { .. } => self.system.safe_mode(),
-                ScenarioEvent::Clear { .. } => self.system.clear(),
-                ScenarioEvent::MapUpdate { .. } => {}
-            }
-        }
-        Ok(())
-    }
-
-    /// After a tick: what the new events say, and whether the run has ended.
-    fn observe(&mut self) {
-        let count = self.system.event_count();
-        if count != self.event_cursor {
-            let n = (count - self.event_cursor).min(self.system.events().len() as u64) as usize;
-            let events = self.system.events();
-            let new = events.iter().skip(events.len() - n);
-            let mut end = None;
-            for e in new {
-                match &e.kind {
-                    EventKind::Arrived { .. } => {
-                        end.get_or_insert(Outcome {
-                            kind: OutcomeKind::Arrived,
-                            reason: String::new(),
-                        });
-                    }
-                    EventKind::Bump { report } => {
-                        end = Some(Outcome {
-                            kind: OutcomeKind::Bumped,
-                            reason: report.to_string(),
-                        });
-                    }
-                    EventKind::PlanningFailed { planner, reason } => {
-                        self.failure = Some(format!("{planner}: {reason}"));
-                    }
-                    EventKind::LocalPlanSent { cells, .. } if *cells > 0 => {
-                        self.failure = None;
-                    }
-                    EventKind::GoalSet { .. } => self.failure = None,
-                    _ => {}
-                }
-            }
-            self.event_cursor = count;
-            if end.is_some() {
-                self.outcome = end;
-                return;
-            }
-        }
-        if self.system.state() == SystemState::Error {
-            let reason = ComponentKind::ALL
-                .into_iter()
-                .find_map(|k| {
-                    self.system
-                        .component_info(k)
-                        .last_error
-                        .map(|e| format!("{k}: {e}"))
-                })
-                .unwrap_or_default();
-            self.outcome = Some(Outcome {
-                kind: OutcomeKind::ComponentError,
-                reason,
-            });
-            return;
-        }
-        let now = self.system.time_ns();
-        let (v, w) = self.system.physics().physics().body_velocity();
-        let idle = matches!(
-            self.system.drive_control().pursuit().phase(),
-            DrivePhase::Idle
-        );
-        let still = v.abs() < STILL_SPEED && w.abs() < STILL_SPEED && idle;
-        if still && (self.failure.is_some() || self.system.is_halted()) {
-            let since = *self.still_since.get_or_insert(now);
-            if now - since >= STILL_NS {
-                self.outcome = Some(match &self.failure {
-                    Some(reason) => Outcome {
-                        kind: OutcomeKind::PlanningFailed,
-                        reason: reason.clone(),
-                    },
-                    None => Outcome {
-                        kind: OutcomeKind::Halted,
-                        reason: "SafeMode or Clear".to_owned(),
-                    },
-                });
-                return;
-            }
-        } else {
-            self.still_since = None;
-        }
-        if now >= self.limit_ns {
-            self.outcome = Some(Outcome {
-                kind: OutcomeKind::TimeLimit,
-                reason: format!("stopped at {} s", self.limit()),
-            });
         }
     }
 
@@ -399,7 +300,7 @@ impl ScenarioRun {
         let s = &self.system;
         let stats = s.stats();
         let pose = s.robot_pose();
-        let goal = s.goal();
+        let goal = s.mission().goal();
         let (position_error, heading_error_deg) = goal.map_or((f64::NAN, f64::NAN), |g| {
             (
                 libm::hypot(pose.x - g.x, pose.y - g.y),
@@ -417,16 +318,20 @@ impl ScenarioRun {
             replans: stats.local_plans,
             global_plans: stats.global_plans,
             min_clearance: stats.min_clearance,
-            body_radius: s.motor_control().geometry().radius_of_body_area,
+            body_radius: s.wiring().motor_control().geometry().radius_of_body_area,
             bumps: stats.bumps,
             planning_failures: stats.planning_failures,
             final_pose: pose,
             goal,
             position_error,
             heading_error_deg,
+            approach_heading_deg: s
+                .mission()
+                .approach_heading_error()
+                .map_or(f64::NAN, f64::to_degrees),
             grid_size: s.map().map_or(f64::NAN, |m| m.grid_size()),
-            samples: s.telemetry().total(),
-            trace_hash: s.telemetry().trace_hash(),
+            samples: s.record().telemetry().total(),
+            trace_hash: s.record().telemetry().trace_hash(),
             expectation: Ok(()),
         };
         report.expectation = report.check(&self.scenario.expect);
@@ -434,66 +339,91 @@ impl ScenarioRun {
     }
 }
 
-impl System {
-    /// The system of `scenario`, ready to run: built with its rates, its configuration
-    /// overrides applied, its map loaded (through `resolver`), start and goal set (the robot
-    /// placed at the start), its map updates queued on MapMaintenance. Every component is
-    /// still Inactive; the other timed events are the runner's ([`ScenarioRun`]).
-    pub fn from_scenario(scenario: &Scenario, resolver: &dyn FileResolver) -> crate::Result<Self> {
-        scenario.validate()?;
-        let fail = |what: &str, e: crate::Error| SystemError::Scenario {
-            scenario: scenario.name.clone(),
-            reason: format!("{what}: {e}"),
-        };
-        let mut system = System::new(scenario.rates).map_err(|e| fail("rates", e))?;
-        for (component, params) in &scenario.config {
-            let kind = ComponentKind::from_name(component)?;
-            let cfg = system.config_mut(kind).map_err(|e| fail("config", e))?;
-            for (name, &value) in params {
-                cfg.set(name, value)
-                    .map_err(|e| fail(&format!("config {component}"), e.into()))?;
+/// The outcome of the run after a tick, if it has ended: arrival, a bump, a component in
+/// Error, standing still for [`STILL_NS`] after a planning failure, a refused request or a
+/// halt, or the time limit. `cursor` counts the events read, `refused` holds the last refused
+/// request, `still_since` when the robot came to stand.
+pub fn judge(
+    system: &System,
+    cursor: &mut u64,
+    refused: &mut Option<String>,
+    still_since: &mut Option<u64>,
+    limit_ns: u64,
+) -> Option<Outcome> {
+    let mut end = None;
+    for e in system.record().events_since(*cursor) {
+        match &e.kind {
+            EventKind::Arrived { .. } => {
+                end.get_or_insert(Outcome {
+                    kind: OutcomeKind::Arrived,
+                    reason: String::new(),
+                });
             }
-        }
-        let map = scenario.load_map(resolver).map_err(|e| fail("map", e))?;
-        system.load_map(map);
-        system
-            .set_position(
-                scenario.start.pose(),
-                scenario.goal.pose(),
-                scenario.direction.direction(),
-            )
-            .map_err(|e| fail("start and goal", e))?;
-        for (i, e) in scenario.events.iter().enumerate() {
-            if let ScenarioEvent::MapUpdate {
-                boxes,
-                cells,
-                value,
-                at,
-            } = e
-            {
-                let Some(map) = system.map() else {
-                    return Err(SystemError::NoMap { call: "MapUpdate" }.into());
-                };
-                let update = Scenario::map_update(map, boxes, cells, *value);
-                system
-                    .schedule_map_update(secs_to_ns(*at), update)
-                    .map_err(|e| fail(&format!("events[{i}]"), e))?;
+            EventKind::Bump { report } => {
+                end = Some(Outcome {
+                    kind: OutcomeKind::Bumped,
+                    reason: report.to_string(),
+                });
             }
+            EventKind::RequestRefused { request, reason } => {
+                *refused = Some(format!("{request}: {reason}"));
+            }
+            EventKind::GoalSet { .. } => *refused = None,
+            _ => {}
         }
-        Ok(system)
     }
-
-    /// Loads the map of `source` through `resolver`; on any error the held map stays and
-    /// nothing changes (SPEC §2: "the previously held map stays").
-    pub fn load_map_from(
-        &mut self,
-        source: &super::scenario::MapSource,
-        resolver: &dyn FileResolver,
-    ) -> crate::Result<()> {
-        let map = source.load(resolver)?;
-        self.load_map(map);
-        Ok(())
+    *cursor = system.record().event_count();
+    if end.is_some() {
+        return end;
     }
+    if system.state() == SystemState::Error {
+        let reason = ComponentKind::ALL
+            .into_iter()
+            .find_map(|k| {
+                let id = k.index();
+                let ec = system.wiring().execution_context();
+                ec.last_error(id)
+                    .ok()
+                    .flatten()
+                    .map(|e| format!("{k}: {e}"))
+            })
+            .unwrap_or_default();
+        return Some(Outcome {
+            kind: OutcomeKind::ComponentError,
+            reason,
+        });
+    }
+    let now = system.time_ns();
+    let wiring = system.wiring();
+    let (v, w) = wiring.physics().physics().body_velocity();
+    let idle = matches!(wiring.drive_control().pursuit().phase(), DrivePhase::Idle);
+    let still = v.abs() < STILL && w.abs() < STILL && idle;
+    let failure = system
+        .mission()
+        .failure()
+        .map(str::to_owned)
+        .or_else(|| refused.clone());
+    if still && (failure.is_some() || system.mission().is_halted()) {
+        let since = *still_since.get_or_insert(now);
+        if now - since >= STILL_NS {
+            return Some(match failure {
+                Some(reason) => Outcome {
+                    kind: OutcomeKind::PlanningFailed,
+                    reason,
+                },
+                None => Outcome {
+                    kind: OutcomeKind::Halted,
+                    reason: "SafeMode or Clear".to_owned(),
+                },
+            });
+        }
+    } else {
+        *still_since = None;
+    }
+    (now >= limit_ns).then(|| Outcome {
+        kind: OutcomeKind::TimeLimit,
+        reason: format!("stopped at {} s", limit_ns as f64 * 1e-9),
+    })
 }
 
 /// Runs `scenario` to its outcome (files through `resolver`) and reports, the expectation
@@ -503,6 +433,6 @@ pub fn run_scenario(
     resolver: &dyn FileResolver,
 ) -> crate::Result<ScenarioReport> {
     let mut run = ScenarioRun::new(scenario, resolver)?;
-    run.run_to_end()?;
+    run.run_to_end();
     Ok(run.report())
 }

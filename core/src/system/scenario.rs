@@ -42,13 +42,12 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
+use super::input::Input;
 use super::rates::Rates;
-use crate::components::MapUpdate;
-use crate::errors::SystemError;
+use crate::errors::ScenarioError;
 use crate::interfaces::{Direction, Pose};
 use crate::map::GridMap;
 use crate::map::formats::{json, movingai, ros};
-use crate::rtc::Time;
 
 /// A scenario file (see the module documentation).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -307,7 +306,7 @@ pub struct Expectation {
 /// Supplies the bytes of the files a scenario names.
 pub trait FileResolver {
     /// The bytes of `path` (as the scenario writes it).
-    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, SystemError>;
+    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, ScenarioError>;
 }
 
 /// Files from memory (wasm: `include_bytes!`; tests).
@@ -336,11 +335,11 @@ impl MemoryResolver {
 }
 
 impl FileResolver for MemoryResolver {
-    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, SystemError> {
+    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, ScenarioError> {
         self.files
             .get(&normalize(path))
             .map(|b| Cow::Borrowed(b.as_ref()))
-            .ok_or_else(|| SystemError::File {
+            .ok_or_else(|| ScenarioError::File {
                 path: path.to_owned(),
                 reason: "not among the files supplied".to_owned(),
             })
@@ -364,11 +363,11 @@ impl DirResolver {
 
 #[cfg(not(target_arch = "wasm32"))]
 impl FileResolver for DirResolver {
-    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, SystemError> {
+    fn read(&self, path: &str) -> Result<Cow<'_, [u8]>, ScenarioError> {
         let full = self.root.join(path);
         std::fs::read(&full)
             .map(Cow::Owned)
-            .map_err(|e| SystemError::File {
+            .map_err(|e| ScenarioError::File {
                 path: full.display().to_string(),
                 reason: e.to_string(),
             })
@@ -404,8 +403,8 @@ fn sibling(yaml: &str, image: &str) -> String {
 
 impl Scenario {
     /// Reads a scenario from JSON (unknown keys are errors) and checks it.
-    pub fn from_json(text: &str) -> Result<Self, SystemError> {
-        let s: Self = serde_json::from_str(text).map_err(|e| SystemError::Scenario {
+    pub fn from_json(text: &str) -> Result<Self, ScenarioError> {
+        let s: Self = serde_json::from_str(text).map_err(|e| ScenarioError::Scenario {
             scenario: "(JSON)".to_owned(),
             reason: e.to_string(),
         })?;
@@ -413,8 +412,8 @@ impl Scenario {
         Ok(s)
     }
 
-    fn err(&self, reason: impl Into<String>) -> SystemError {
-        SystemError::Scenario {
+    fn err(&self, reason: impl Into<String>) -> ScenarioError {
+        ScenarioError::Scenario {
             scenario: self.name.clone(),
             reason: reason.into(),
         }
@@ -423,7 +422,7 @@ impl Scenario {
     /// Checks what serde cannot: finite numbers, a positive time limit, event times within
     /// it and in order, known component names (parameter names and ranges are checked when
     /// applied).
-    pub fn validate(&self) -> Result<(), SystemError> {
+    pub fn validate(&self) -> Result<(), ScenarioError> {
         for (what, p) in [("start", self.start), ("goal", self.goal)] {
             if !(p.x.is_finite() && p.y.is_finite() && p.heading_deg.is_finite()) {
                 return Err(self.err(format!("{what} has a number that is not finite")));
@@ -510,14 +509,15 @@ impl Scenario {
         self.map.load(resolver)
     }
 
-    /// The `MapUpdate` of a `map_update` event on `map` (cells outside the map are
+    /// The cells `(x, y, value)` of a `map_update` event on `map`: the cells listed, then
+    /// the cells whose centre lies in each box (clipped to the map; cells outside the map are
     /// refused when applied).
-    pub fn map_update(
+    pub fn cells_of(
         map: &GridMap,
         boxes: &[BoxSpec],
         cells: &[[i64; 2]],
         value: i16,
-    ) -> MapUpdate {
+    ) -> Vec<(i64, i64, i16)> {
         let mut list: Vec<(i64, i64, i16)> = cells.iter().map(|c| (c[0], c[1], value)).collect();
         let g = map.grid_size();
         let (ox, oy) = map.origin();
@@ -535,13 +535,38 @@ impl Scenario {
                 }
             }
         }
-        MapUpdate::from_cells(&list, Time::default())
+        list
     }
 }
 
-fn text(resolver: &dyn FileResolver, path: &str) -> Result<String, SystemError> {
+impl ScenarioEvent {
+    /// The request this event makes of the system with `map` loaded (the timeline's
+    /// interpretation; a `goal` is a new goal from where the robot is).
+    pub fn to_input(&self, map: Option<&GridMap>) -> Input {
+        match self {
+            Self::MapUpdate {
+                boxes,
+                cells,
+                value,
+                ..
+            } => Input::MapUpdate {
+                cells: map.map_or_else(Vec::new, |m| Scenario::cells_of(m, boxes, cells, *value)),
+            },
+            Self::Goal {
+                goal, direction, ..
+            } => Input::SetGoal {
+                goal: goal.pose(),
+                direction: direction.direction(),
+            },
+            Self::SafeMode { .. } => Input::SafeMode,
+            Self::Clear { .. } => Input::Clear,
+        }
+    }
+}
+
+fn text(resolver: &dyn FileResolver, path: &str) -> Result<String, ScenarioError> {
     let bytes = resolver.read(path)?;
-    String::from_utf8(bytes.into_owned()).map_err(|e| SystemError::File {
+    String::from_utf8(bytes.into_owned()).map_err(|e| ScenarioError::File {
         path: path.to_owned(),
         reason: format!("not UTF-8 text: {e}"),
     })
@@ -563,7 +588,7 @@ mod tests {
     #[test]
     fn boxes_cover_the_cells_whose_centre_is_inside() {
         let map = GridMap::from_map_data(&[0; 100], 10, 10, 0.5).unwrap();
-        let u = Scenario::map_update(
+        let cells = Scenario::cells_of(
             &map,
             &[BoxSpec {
                 x: [1.0, 1.75],
@@ -573,9 +598,7 @@ mod tests {
             1,
         );
         // x centres 1.25 (i = 2) and 1.75 (i = 3); y centre 0.25 (j = 0).
-        assert_eq!(u.x, vec![9, 2, 3]);
-        assert_eq!(u.y, vec![9, 0, 0]);
-        assert_eq!(u.num, 3);
+        assert_eq!(cells, vec![(9, 9, 1), (2, 0, 1), (3, 0, 1)]);
     }
 
     #[test]

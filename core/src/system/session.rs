@@ -1,41 +1,43 @@
-//! [`Session`]: the system as a person drives it from InventGUI (SPEC §5) — the browser page
-//! and anything else interactive. The wasm layer is a thin binding over it.
+//! [`Session`]: the system as a person drives it from InventGUI (spec §5) — the browser page
+//! and anything else interactive. It is the user interface's one boundary: the wasm layer is
+//! a thin binding over it.
 //!
-//! What a session adds to the [`System`]:
-//! - **A set-up and the planning preview.** After a scenario or a map is loaded the planning
-//!   components are Active and the plan is drawn ([`System::preview`]); the robot's components
-//!   wait, Inactive, for **Activate**. The execution context runs all the time (as in OpenRTM:
-//!   Inactive components are simply not executed). While the robot stands, a new start or
-//!   goal, or a changed planning parameter, is planned at once so the drawing follows.
-//! - **The scenario's timed events** count from the moment the robot starts
-//!   ([`System::set_drive_script`]).
+//! What a session adds to the [`System`] (which knows nothing of it):
+//! - **The set-up** ([`Setup`]): a scenario is built by the one set-up builder
+//!   ([`setup::build`]) with the whole potential field drawn; the map cells edited since the
+//!   load and every parameter that differs from the scenario's are recorded, which is what a
+//!   share link carries ([`Session::share_token`]). Replaying a set-up is one function,
+//!   [`Session::restart_setup`], so a link opened in a fresh page and the page that made it
+//!   show the identical first frame.
+//! - **The timeline** of the scenario's timed events ([`Timeline`]: they count from the start
+//!   of the drive).
 //! - **The clock**: wall time × speed (0.25× to 16×) becomes whole base ticks, the remainder
 //!   kept; pause; single ticks.
-//! - **The set-up record** ([`Setup`]): start, goal, direction, the map cells edited since the
-//!   load and every parameter that differs from the scenario's. It is what a share link
-//!   carries ([`Session::share_token`]). **Decision**: replaying a set-up is one function,
-//!   [`Session::restart_setup`] — the scenario built afresh, the parameters set, the edits
-//!   made, start and goal placed, the preview run — so a link opened in a fresh page and the
-//!   page that made it (sharing while the robot stands restarts its set-up the same way) show
-//!   the identical first frame.
-//! - **Teaching read-outs**: the plot window ([`Session::plot`]).
+//! - **Planning at once while the robot stands**: after a request that changes what the
+//!   planners plan (start and goal, a map edit, a parameter), the session runs the system until
+//!   the planners have settled, so the drawing follows even while paused.
+//! - **Read-outs for people**: new events since the last look, the parameter panel's view,
+//!   the plot window, the status.
 
 use std::collections::BTreeMap;
 
 use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
-use super::events::EventKind;
+use super::events::SystemEvent;
+use super::input::Input;
 use super::kind::ComponentKind;
 use super::rates::Rates;
-use super::runtime::System;
+use super::robot::System;
 use super::scenario::{FileResolver, MapSource, MemoryResolver, Scenario};
-use crate::components::MapUpdate;
-use crate::errors::SystemError;
-use crate::interfaces::{Direction, Pose};
+use super::setup::{self, BuildOptions, PLAN_SECONDS, SETUP_VERSION, Setup};
+use super::status::Status;
+use super::timeline::Timeline;
+use crate::errors::SessionError;
+use crate::interfaces::Direction;
 use crate::map::GridMap;
-use crate::rtc::{LifecycleState, Time};
+use crate::rtc::LifecycleState;
 
 /// The most wall time one [`Session::advance`] turns into simulated time \[ms\]: a tab that
 /// was in the background resumes where it was instead of catching up in one frame.
@@ -44,21 +46,21 @@ pub const MAX_STEP_MS: f64 = 100.0;
 pub const MIN_SPEED: f64 = 0.25;
 /// The fastest speed offered.
 pub const MAX_SPEED: f64 = 16.0;
-/// How much simulated time the planning preview may take at most \[s\].
-pub const PREVIEW_SECONDS: f64 = 5.0;
 /// The longest plot window \[s\].
 pub const MAX_PLOT_SECONDS: f64 = 60.0;
-/// The version written into share tokens.
-const SHARE_VERSION: u32 = 1;
 
 /// The components whose parameters a session shows and a set-up records, in the order the
-/// page lists them.
+/// page lists them. GlobalPathPlanning's one parameter, `dmin`, is LocalPathPlanning's
+/// (spec §3 Decision 0.2), so it is shown and recorded once, there.
 pub const TUNABLE: [ComponentKind; 4] = [
     ComponentKind::LocalPathPlanning,
     ComponentKind::MotorControl,
     ComponentKind::DriveControl,
     ComponentKind::PhysicsSim,
 ];
+
+/// The drawing options of every set-up a session builds.
+const DRAWN: BuildOptions = BuildOptions { full_field: true };
 
 /// Where the loaded map came from.
 #[derive(Debug, Clone)]
@@ -72,25 +74,6 @@ enum Source {
     },
     /// A map file the user picked.
     MapFile,
-}
-
-/// A set-up: what a share link carries (see the module documentation).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Setup {
-    /// Version of the encoding.
-    pub v: u32,
-    /// The scenario's name.
-    pub scenario: String,
-    /// Where the robot was placed `[x, y, θ]` (m, m, rad), if it was.
-    pub start: Option<[f64; 3]>,
-    /// The goal `[x, y, θ]`, if one is held.
-    pub goal: Option<[f64; 3]>,
-    /// Driving backward.
-    pub backward: bool,
-    /// Map cells edited since the load: `[x, y, value]`, in (x, y) order.
-    pub edits: Vec<(i64, i64, i16)>,
-    /// Parameters that differ from the scenario's: component → name → value.
-    pub params: BTreeMap<String, BTreeMap<String, f64>>,
 }
 
 /// The last seconds of telemetry as one array per series (what the plots draw).
@@ -137,7 +120,7 @@ pub struct ComponentParameters {
     pub params: Vec<ParameterView>,
 }
 
-/// One parameter: its declaration (SPEC §1) and its values now.
+/// One parameter: its declaration (spec §1) and its values now.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ParameterView {
     /// The seed's name.
@@ -179,6 +162,7 @@ struct Clock {
 #[derive(Debug)]
 pub struct Session {
     system: System,
+    timeline: Timeline,
     clock: Clock,
     source: Source,
     /// The parameters as loaded (a set-up records the differences).
@@ -187,6 +171,8 @@ pub struct Session {
     edits: BTreeMap<(i64, i64), i16>,
     /// The map's file name (the scenario's map file, or the file picked).
     map_name: String,
+    /// Events handed out so far ([`Session::new_events`]).
+    events_seen: u64,
 }
 
 /// Every [`TUNABLE`] parameter's requested value, by component and name.
@@ -195,7 +181,7 @@ type Parameters = BTreeMap<(ComponentKind, String), f64>;
 fn parameters_of(system: &System) -> Parameters {
     let mut out = BTreeMap::new();
     for kind in TUNABLE {
-        if let Ok(config) = system.config(kind) {
+        if let Ok(config) = system.wiring().config(kind) {
             for spec in config.specs() {
                 if let Ok(v) = config.value(spec.name) {
                     out.insert((kind, spec.name.to_owned()), v);
@@ -206,36 +192,24 @@ fn parameters_of(system: &System) -> Parameters {
     out
 }
 
-fn encoded(p: Pose) -> [f64; 3] {
-    [p.x, p.y, p.theta]
-}
-
-fn decoded(p: [f64; 3]) -> Pose {
-    Pose::new(p[0], p[1], p[2])
-}
-
-fn direction_of(backward: bool) -> Direction {
-    if backward {
-        Direction::Backward
-    } else {
-        Direction::Forward
-    }
-}
+/// The most a share token may inflate to \[bytes\] (16 MiB; a set-up is a few KiB).
+pub const TOKEN_INFLATE_LIMIT: usize = 1 << 24;
 
 fn bad_token(reason: impl Into<String>) -> crate::Error {
-    SystemError::BadShareToken {
+    SessionError::BadShareToken {
         reason: reason.into(),
     }
     .into()
 }
 
 impl Session {
-    /// An empty system (no map), drawing the whole potential field.
+    /// An empty system (no map).
     pub fn new() -> crate::Result<Self> {
         let mut system = System::new(Rates::default())?;
-        system.set_full_field(true);
+        system.set_full_field(DRAWN.full_field);
         Ok(Self {
             system,
+            timeline: Timeline::default(),
             clock: Clock {
                 speed: 1.0,
                 paused: false,
@@ -245,12 +219,18 @@ impl Session {
             baseline: BTreeMap::new(),
             edits: BTreeMap::new(),
             map_name: String::new(),
+            events_seen: 0,
         })
     }
 
     /// The system.
     pub fn system(&self) -> &System {
         &self.system
+    }
+
+    /// What the robot is doing, in words.
+    pub fn status(&self) -> Status {
+        self.system.status()
     }
 
     /// The map's file name: the scenario's map file, or the file the user picked.
@@ -266,11 +246,15 @@ impl Session {
         }
     }
 
+    /// The timeline of the scenario's timed events.
+    pub fn timeline(&self) -> &Timeline {
+        &self.timeline
+    }
+
     // ------------------------------------------------------------------ loading
 
-    /// Loads `scenario` (its files through `files`): rates, configuration, map, start and
-    /// goal; the planning preview; its timed events held for the drive. On an error the
-    /// current session stays.
+    /// Loads `scenario` (its files through `resolver`) as the set-up builder builds it. On an
+    /// error the current session stays.
     pub fn load_scenario(
         &mut self,
         scenario: Scenario,
@@ -282,23 +266,14 @@ impl Session {
             let bytes = resolver.read(&path)?.into_owned();
             files.insert(&path, bytes);
         }
-        let setup = Setup {
-            v: SHARE_VERSION,
-            scenario: scenario.name.clone(),
-            start: None,
-            goal: None,
-            backward: false,
-            edits: Vec::new(),
-            params: BTreeMap::new(),
-        };
-        let (system, baseline) = Self::build(&scenario, &files, &setup)?;
+        let system = setup::build(&scenario, &files, &Setup::of(&scenario), DRAWN)?;
         self.map_name = match &scenario.map {
             MapSource::Json { path } | MapSource::Movingai { path, .. } => path.clone(),
             MapSource::Ros { yaml, .. } => yaml.clone(),
         };
+        self.timeline = Timeline::new(&scenario.events);
         self.install(
             system,
-            baseline,
             Source::Scenario {
                 scenario: Box::new(scenario),
                 files,
@@ -307,74 +282,29 @@ impl Session {
         Ok(())
     }
 
-    /// Replaces the whole configuration from one `.conf` text ([`System::load_conf`]);
-    /// all-or-nothing. A changed planning parameter is planned at once while the robot
-    /// stands.
-    pub fn load_conf(&mut self, text: &str) -> crate::Result<()> {
-        self.system.load_conf(text)?;
-        self.replan_after_parameters(&ComponentKind::PLANNING)
-    }
-
     /// Loads a map the user picked into a fresh system with the planning components active
     /// and no start or goal; `name` is the file's name. On an error the current session
     /// stays.
     pub fn load_map(&mut self, name: &str, map: GridMap) -> crate::Result<()> {
         let mut system = System::new(Rates::default())?;
-        system.set_full_field(true);
+        system.set_full_field(DRAWN.full_field);
         system.load_map(map);
-        for kind in ComponentKind::PLANNING {
-            system.activate(kind)?;
+        for component in ComponentKind::PLANNING {
+            system.apply(&Input::Activate { component })?;
         }
         self.map_name = name.to_owned();
-        let baseline = parameters_of(&system);
-        self.install(system, baseline, Source::MapFile);
+        self.timeline = Timeline::default();
+        self.install(system, Source::MapFile);
         Ok(())
     }
 
-    fn install(&mut self, system: System, baseline: Parameters, source: Source) {
+    fn install(&mut self, system: System, source: Source) {
+        self.baseline = parameters_of(&system);
         self.system = system;
         self.source = source;
         self.clock.pending_ns = 0;
         self.edits.clear();
-        self.baseline = baseline;
-    }
-
-    /// The system of `scenario` with `setup` replayed (see the module documentation): the
-    /// one function both a fresh load and a shared link go through. Also returns the
-    /// scenario's own parameters (before the set-up's), which a set-up is measured against.
-    fn build(
-        scenario: &Scenario,
-        files: &MemoryResolver,
-        setup: &Setup,
-    ) -> crate::Result<(System, Parameters)> {
-        let timeless = Scenario {
-            events: Vec::new(),
-            ..scenario.clone()
-        };
-        let mut system = System::from_scenario(&timeless, files)?;
-        system.set_full_field(true);
-        let baseline = parameters_of(&system);
-        for (component, params) in &setup.params {
-            let kind = ComponentKind::from_name(component)?;
-            let config = system.config_mut(kind)?;
-            for (name, &value) in params {
-                config.set(name, value)?;
-            }
-        }
-        if !setup.edits.is_empty() {
-            system.map_update(MapUpdate::from_cells(&setup.edits, Time::default()))?;
-        }
-        if let (Some(start), Some(goal)) = (setup.start, setup.goal) {
-            system.set_position(decoded(start), decoded(goal), direction_of(setup.backward))?;
-        }
-        system
-            .preview(PREVIEW_SECONDS)
-            .map_err(|e| SystemError::Scenario {
-                scenario: scenario.name.clone(),
-                reason: format!("preview: {e}"),
-            })?;
-        system.set_drive_script(&scenario.events);
-        Ok((system, baseline))
+        self.events_seen = 0;
     }
 
     // ------------------------------------------------------------------ set-up and sharing
@@ -403,13 +333,13 @@ impl Session {
                     .insert(pname, value);
             }
         }
-        let s = &self.system;
+        let m = self.system.mission();
         Ok(Setup {
-            v: SHARE_VERSION,
+            v: SETUP_VERSION,
             scenario: name,
-            start: s.start().map(encoded),
-            goal: s.goal().map(encoded),
-            backward: s.direction() == Direction::Backward,
+            start: m.start().map(|p| [p.x, p.y, p.theta]),
+            goal: m.goal().map(|p| [p.x, p.y, p.theta]),
+            backward: m.direction() == Direction::Backward,
             edits: self.edits.iter().map(|(&(x, y), &v)| (x, y, v)).collect(),
             params,
         })
@@ -433,13 +363,22 @@ impl Session {
         let bytes = URL_SAFE_NO_PAD
             .decode(token.trim())
             .map_err(|e| bad_token(format!("not base64url: {e}")))?;
-        let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, 1 << 24)
-            .map_err(|e| bad_token(format!("not deflated data: {e:?}")))?;
+        // The error names the inflate status only: its partial output (up to the limit)
+        // would make a message of megabytes (issue 18, a deflate bomb).
+        let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, TOKEN_INFLATE_LIMIT)
+            .map_err(|e| {
+                bad_token(match e.status {
+                    miniz_oxide::inflate::TINFLStatus::HasMoreOutput => {
+                        format!("it inflates to more than {TOKEN_INFLATE_LIMIT} bytes")
+                    }
+                    status => format!("not deflated data ({status:?})"),
+                })
+            })?;
         let setup: Setup =
             serde_json::from_slice(&json).map_err(|e| bad_token(format!("bad set-up: {e}")))?;
-        if setup.v != SHARE_VERSION {
+        if setup.v != SETUP_VERSION {
             return Err(bad_token(format!(
-                "version {} (this page reads version {SHARE_VERSION})",
+                "version {} (this page reads version {SETUP_VERSION})",
                 setup.v
             )));
         }
@@ -462,8 +401,8 @@ impl Session {
         self.restart_setup(&setup)
     }
 
-    /// Rebuilds the scenario loaded with `setup` replayed (see the module documentation).
-    /// On an error nothing changes.
+    /// Rebuilds the scenario loaded with `setup` replayed ([`setup::build`]). On an error
+    /// nothing changes.
     pub fn restart_setup(&mut self, setup: &Setup) -> crate::Result<()> {
         let Source::Scenario { scenario, files } = &self.source else {
             return Err(bad_token("no scenario is loaded to replay the set-up on"));
@@ -474,10 +413,14 @@ impl Session {
                 setup.scenario, scenario.name
             )));
         }
-        let (system, baseline) = Self::build(scenario, files, setup)?;
+        let system = setup::build(scenario, files, &Setup::of(scenario), DRAWN)
+            .and_then(|base| Ok((base, setup::build(scenario, files, setup, DRAWN)?)))?;
+        let (base, system) = system;
+        self.baseline = parameters_of(&base);
+        self.timeline = Timeline::new(&scenario.events);
         self.system = system;
-        self.baseline = baseline;
         self.clock.pending_ns = 0;
+        self.events_seen = 0;
         self.edits = setup.edits.iter().map(|&(x, y, v)| ((x, y), v)).collect();
         Ok(())
     }
@@ -497,16 +440,16 @@ impl Session {
             0.0
         };
         self.clock.pending_ns += libm::round(ms * self.clock.speed * 1e6) as u64;
-        let base = self.system.execution_context().base_period_ns();
+        let base = self.system.wiring().execution_context().base_period_ns();
         let ticks = self.clock.pending_ns / base;
         self.clock.pending_ns %= base;
-        self.system.step(ticks);
+        self.timeline.run(&mut self.system, ticks);
         ticks
     }
 
     /// Runs `ticks` base ticks now, paused or not (single step).
     pub fn step_ticks(&mut self, ticks: u64) {
-        self.system.step(ticks);
+        self.timeline.run(&mut self.system, ticks);
     }
 
     /// Pauses or resumes the clock.
@@ -522,7 +465,7 @@ impl Session {
     /// Sets the speed (simulated seconds per wall second), [`MIN_SPEED`] to [`MAX_SPEED`].
     pub fn set_speed(&mut self, speed: f64) -> crate::Result<()> {
         if !(MIN_SPEED..=MAX_SPEED).contains(&speed) {
-            return Err(SystemError::BadSpeed {
+            return Err(SessionError::BadSpeed {
                 speed,
                 min: MIN_SPEED,
                 max: MAX_SPEED,
@@ -538,168 +481,72 @@ impl Session {
         self.clock.speed
     }
 
-    // ------------------------------------------------------------------ lifecycle
+    // ------------------------------------------------------------------ requests
 
-    /// Activates one component.
-    pub fn activate(&mut self, kind: ComponentKind) -> crate::Result<LifecycleState> {
-        self.system.activate(kind)
-    }
-
-    /// Deactivates one component.
-    pub fn deactivate(&mut self, kind: ComponentKind) -> crate::Result<LifecycleState> {
-        self.system.deactivate(kind)
-    }
-
-    /// Resets one component in Error.
-    pub fn reset(&mut self, kind: ComponentKind) -> crate::Result<LifecycleState> {
-        self.system.reset(kind)
-    }
-
-    /// Makes the component's next execution fail with `injected fault: {reason}`.
-    pub fn inject_fault(&mut self, kind: ComponentKind, reason: &str) -> crate::Result<()> {
-        self.system.inject_fault(kind, reason)
-    }
-
-    /// Writes one sample into a component's input port ([`System::inject_input`]).
-    pub fn inject_input(
-        &mut self,
-        kind: ComponentKind,
-        port: &str,
-        data: Vec<f64>,
-    ) -> crate::Result<()> {
-        self.system.inject_input(kind, port, data)
-    }
-
-    /// Activates every Inactive component.
-    pub fn activate_all(&mut self) -> super::SystemState {
-        self.system.activate_all()
-    }
-
-    /// Deactivates every Active component.
-    pub fn deactivate_all(&mut self) -> super::SystemState {
-        self.system.deactivate_all()
-    }
-
-    /// Resets every component in Error and deactivates the Active ones.
-    pub fn reset_all(&mut self) -> super::SystemState {
-        self.system.reset_all()
-    }
-
-    // ------------------------------------------------------------------ inputs
-
-    /// Whether the robot stands with every planning component Active: then a change of the
-    /// set-up is planned at once.
-    fn plans_now(&self) -> bool {
-        !self.system.is_driving()
-            && ComponentKind::PLANNING
-                .iter()
-                .all(|&k| self.system.component_state(k) == LifecycleState::Active)
-    }
-
-    fn preview_if_standing(&mut self) -> crate::Result<()> {
-        if self.plans_now() {
-            self.system.preview(PREVIEW_SECONDS)?;
+    /// Carries out `input` ([`System::apply`]); map edits are recorded in the set-up. While
+    /// the robot stands with the planners Active, a request that changes what they plan is
+    /// planned at once (module documentation). Refused requests change nothing.
+    pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
+        self.system.apply(input)?;
+        let replans = match input {
+            Input::MapUpdate { cells } => {
+                for &(x, y, v) in cells {
+                    self.edits.insert((x, y), v);
+                }
+                true
+            }
+            Input::SetPosition { .. } | Input::SetGoal { .. } | Input::LoadConf { .. } => true,
+            Input::SetParam { component, .. } => ComponentKind::PLANNING.contains(component),
+            _ => false,
+        };
+        let planners_active = ComponentKind::PLANNING
+            .iter()
+            .all(|&k| self.system.component_state(k) == LifecycleState::Active);
+        if replans && planners_active && !self.system.is_driving() {
+            self.system.run_until_planned(PLAN_SECONDS)?;
         }
         Ok(())
     }
 
-    /// `SetPosition`: places the robot at `start` and sets the goal; planned at once while
-    /// the robot stands. Refused (nothing changes) as [`System::set_position`].
-    pub fn set_position(
+    /// Sets a parameter from text, parsed by its declaration (spec §1).
+    pub fn set_param_text(
         &mut self,
-        start: Pose,
-        goal: Pose,
-        direction: Direction,
+        component: ComponentKind,
+        name: &str,
+        text: &str,
     ) -> crate::Result<()> {
-        self.system.set_position(start, goal, direction)?;
-        self.preview_if_standing()
-    }
-
-    /// A new goal from where the robot is ([`System::set_goal`]); planned at once while the
-    /// robot stands.
-    pub fn set_goal(&mut self, goal: Pose, direction: Direction) -> crate::Result<()> {
-        self.system.set_goal(goal, direction)?;
-        self.preview_if_standing()
-    }
-
-    /// `MapUpdate` of `cells` `(x, y, value)`, recorded in the set-up. Returns how many
-    /// changed; refused as a whole (nothing changes) for a cell outside the map.
-    pub fn set_cells(&mut self, cells: &[(i64, i64, i16)]) -> crate::Result<usize> {
-        let changed = self
-            .system
-            .map_update(MapUpdate::from_cells(cells, Time::default()))?;
-        for &(x, y, v) in cells {
-            self.edits.insert((x, y), v);
-        }
-        Ok(changed)
-    }
-
-    /// `Clear`.
-    pub fn clear(&mut self) {
-        self.system.clear();
-    }
-
-    /// `SafeMode`.
-    pub fn safe_mode(&mut self) {
-        self.system.safe_mode();
-    }
-
-    // ------------------------------------------------------------------ parameters
-
-    /// Sets a parameter from text (SPEC §1: `always` at once, `on_activation` pending until
-    /// the next activation; out of range refused, the old value stays). A changed planning
-    /// parameter is planned at once while the robot stands (the goal sent again).
-    pub fn set_param(&mut self, kind: ComponentKind, name: &str, text: &str) -> crate::Result<()> {
-        self.system.config_mut(kind)?.set_text(name, text)?;
-        self.replan_after_parameters(&[kind])
-    }
-
-    /// MotorControl's `SetPDGain` (002 §3.2.2.1 (1)); all four checked first.
-    pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
-        self.system.set_pd_gain(p_l, p_r, d_l, d_r)
-    }
-
-    fn replan_after_parameters(&mut self, kinds: &[ComponentKind]) -> crate::Result<()> {
-        let planning = kinds.iter().any(|k| ComponentKind::PLANNING.contains(k));
-        if !(planning && self.plans_now()) {
-            return Ok(());
-        }
-        let Some(goal) = self.system.goal() else {
-            return Ok(());
-        };
-        let direction = self.system.direction();
-        // The plan the parameter shapes is made from where the robot stands; a goal the new
-        // parameter refuses (e.g. a larger dmin) stays with its old path, and says why.
-        match self.system.set_goal(goal, direction) {
-            Ok(()) => self.system.preview(PREVIEW_SECONDS).map(|_| ()),
-            Err(e) => {
-                self.system.push_event(EventKind::RequestRefused {
-                    request: "planning again with the new parameters".to_owned(),
-                    reason: e.to_string(),
-                });
-                Ok(())
-            }
-        }
+        let config = self.system.wiring().config(component)?;
+        let spec = config
+            .specs()
+            .iter()
+            .find(|s| s.name == name)
+            .ok_or_else(|| crate::errors::ConfigError::UnknownParameter {
+                name: name.to_owned(),
+                line: None,
+            })?;
+        let value = spec.parse(text, None)?;
+        self.apply(&Input::SetParam {
+            component,
+            name: name.to_owned(),
+            value,
+        })
     }
 
     // ------------------------------------------------------------------ read-outs
 
-    /// The state to draw (feature `render`).
-    #[cfg(feature = "render")]
-    pub fn scene(&mut self) -> Option<crate::render::Scene<'_>> {
-        self.system.scene()
-    }
-
-    /// Takes the events kept ([`System::drain_events`]).
-    pub fn drain_events(&mut self) -> Vec<super::SystemEvent> {
-        self.system.drain_events()
+    /// The events since the last call (those still kept), oldest first.
+    pub fn new_events(&mut self) -> Vec<SystemEvent> {
+        let record = self.system.record();
+        let events = record.events_since(self.events_seen).cloned().collect();
+        self.events_seen = record.event_count();
+        events
     }
 
     /// Every parameter of the [`TUNABLE`] components, as the parameter panel lists them.
     pub fn parameters_view(&self) -> Vec<ComponentParameters> {
         let mut out = Vec::new();
         for kind in TUNABLE {
-            let Ok(config) = self.system.config(kind) else {
+            let Ok(config) = self.system.wiring().config(kind) else {
                 continue;
             };
             let params = config
@@ -740,11 +587,11 @@ impl Session {
         let now = s.time_ns();
         let from = now.saturating_sub(libm::round(seconds * 1e9) as u64);
         let mut w = PlotWindow {
-            deviatinglen: s.local_path_planning().params().deviatinglen,
+            deviatinglen: s.wiring().local_path_planning().params().deviatinglen,
             ..PlotWindow::default()
         };
         // The window is at the end of a long history: find its start from the back.
-        let samples = s.telemetry().samples();
+        let samples = s.record().telemetry().samples();
         let inside = samples
             .iter()
             .rev()
@@ -766,6 +613,7 @@ impl Session {
                 .push(sample.deviation.is_finite().then_some(sample.deviation));
         }
         w.replans = s
+            .record()
             .plan_times()
             .filter(|&t| t >= from)
             .map(|t| t as f64 * 1e-9)

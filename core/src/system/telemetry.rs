@@ -1,5 +1,5 @@
 //! Telemetry: the robot's state sampled at a fixed simulated rate into a bounded history,
-//! and the trace hash over every sample (SPEC §6: "the same scenario gives the same trace
+//! and the trace hash over every sample (spec §6: "the same scenario gives the same trace
 //! bit for bit, natively and in wasm").
 
 use std::collections::VecDeque;
@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
+use super::wiring::Wiring;
 use crate::errors::SystemError;
 use crate::interfaces::Pose;
 
@@ -43,6 +44,31 @@ pub struct TelemetrySample {
 }
 
 impl TelemetrySample {
+    /// The sample of the components' state now, stamped `time_ns`.
+    pub fn of(wiring: &Wiring, time_ns: u64) -> Self {
+        let physics = wiring.physics().physics();
+        let state = physics.state();
+        let motor = wiring.motor_control();
+        let drive = wiring.drive_control();
+        let (v_cmd, w_cmd) = drive.pursuit().last_command();
+        let (v, w) = physics.body_velocity();
+        Self {
+            time_ns,
+            pose: state.pose,
+            estimate: wiring.localization().current_pose(),
+            wheel_angle: state.wheel_angle,
+            wheel_rate: state.wheel_rate,
+            target_wheel_angle: motor.target_wheel_angles(),
+            target_wheel_rate: motor.target_wheel_rates(),
+            torque: motor.last_torque(),
+            v_cmd,
+            w_cmd,
+            v,
+            w,
+            deviation: drive.deviation().unwrap_or(f64::NAN),
+        }
+    }
+
     /// The CSV header matching [`TelemetrySample::write_csv_row`].
     pub const CSV_HEADER: &'static str = "t,x,y,theta,est_x,est_y,est_theta,\
 wheel_angle_l,wheel_angle_r,wheel_rate_l,wheel_rate_r,target_angle_l,target_angle_r,\
@@ -182,12 +208,17 @@ impl Telemetry {
     /// The trace hash: SHA-256 over [`TelemetrySample::bits`] of every sample taken, as 64
     /// lowercase hex digits.
     pub fn trace_hash(&self) -> String {
-        let digest = self.hasher.clone().finalize();
-        let mut s = String::with_capacity(64);
-        for b in digest.iter() {
-            let _ = write!(s, "{b:02x}");
+        hex(&self.hasher.clone().finalize())
+    }
+
+    /// The trace hash of `samples` alone (e.g. a prefix of a history, to compare two runs
+    /// up to where the shorter one ended).
+    pub fn hash_of<'a>(samples: impl IntoIterator<Item = &'a TelemetrySample>) -> String {
+        let mut hasher = Sha256::new();
+        for s in samples {
+            hasher.update(s.bits());
         }
-        s
+        hex(&hasher.finalize())
     }
 
     /// The whole history as CSV, header first.
@@ -266,4 +297,12 @@ mod tests {
             1 + sample(0).values().len()
         );
     }
+}
+
+fn hex(digest: &[u8]) -> String {
+    let mut s = String::with_capacity(2 * digest.len());
+    for b in digest {
+        let _ = write!(s, "{b:02x}");
+    }
+    s
 }

@@ -1,5 +1,5 @@
-// The RTC panel: every component of the system (SPEC §0) with its lifecycle state in the RT
-// System Editor's colours, the reason when it is in Error, and the requests of SPEC §1 —
+// The RTC panel: every component of the system (spec §0) with its lifecycle state in the RT
+// System Editor's colours, the reason when it is in Error, and the requests of spec §1 —
 // for all components at once and for each one — plus "Inject fault", and for Localization
 // a "Sensor glitch" (issue 7): one NaN pose written into its InSimulatedPosition port, as
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).

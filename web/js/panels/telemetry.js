@@ -36,12 +36,8 @@ export function createTelemetry(root, app) {
       set('goal', t.distance_to_goal === null ? '—' : `${t.distance_to_goal.toFixed(2)} m`);
       set('driven', `${t.path_length.toFixed(2)} m`);
       set('plans', `${t.global_plans} global · ${t.local_plans} local`);
-      let status;
-      if (t.state === 'Error') status = t.bumps > 0 ? 'Error: bumped' : 'Error';
-      else if (t.arrived) status = 'Arrived ✓';
-      else if (t.halted) status = 'Halted';
-      else if (t.driving) status = t.goal ? `Driving ${t.direction}` : 'Standing';
-      else status = 'Waiting to be activated';
+      // What the core says is true (rtnav::system::Status), not guessed here.
+      let status = t.status.charAt(0).toUpperCase() + t.status.slice(1);
       if (t.paused) status += ' · paused';
       set('status', status);
       values.get('status').dataset.arrived = String(t.arrived);

@@ -1,4 +1,4 @@
-//! rtnav's own JSON map format: small, readable and writable by hand (SPEC §2).
+//! rtnav's own JSON map format: small, readable and writable by hand (spec §2).
 //!
 //! ```json
 //! {

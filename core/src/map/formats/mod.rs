@@ -1,5 +1,5 @@
 //! Map file formats, each read from text or bytes (no filesystem: the core also runs in the
-//! browser) into a valid [`GridMap`](super::GridMap) (SPEC §2, §5 "MapBuilder").
+//! browser) into a valid [`GridMap`](super::GridMap) (spec §2, §5 "MapBuilder").
 //!
 //! | module | format |
 //! | --- | --- |

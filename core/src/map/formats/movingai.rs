@@ -1,4 +1,4 @@
-//! The MovingAI grid pathfinding benchmark's `.map` and `.scen` files (SPEC §5
+//! The MovingAI grid pathfinding benchmark's `.map` and `.scen` files (spec §5
 //! "GlobalPathPlanning"; N. Sturtevant, "Benchmarks for Grid-Based Pathfinding", 2012;
 //! movingai.com/benchmarks/formats.html).
 //!

@@ -1,5 +1,5 @@
 //! ROS `map_server` maps: a YAML file and an image (PGM or PNG), read as map_server reads
-//! them (SPEC §2, §5 "MapBuilder"; the rule is the one `../shared/data/README.md` gives).
+//! them (spec §2, §5 "MapBuilder"; the rule is spec §2 "Map formats").
 //!
 //! The YAML keys (all required except `mode`, as in map_server; other keys are ignored, as
 //! map_server ignores them):

@@ -1,8 +1,8 @@
 //! Obstacle clearance: the exact distance from the robot's centre to the nearest obstacle
-//! cell (the cell's square, as the physics' bump test uses it; SPEC §5 "touching an obstacle
-//! cell is a bump"), cells outside the map counting as obstacles (SPEC §2).
+//! cell (the cell's square, as the physics' bump test uses it; spec §5 "touching an obstacle
+//! cell is a bump"), cells outside the map counting as obstacles (spec §2).
 
-use crate::map::GridMap;
+use super::GridMap;
 
 /// The squared distance from `(x, y)` to the square with lower-left corner `(lx, ly)` and
 /// side `g`.

@@ -1,4 +1,4 @@
-//! The LocalPathPlanning RT-component (seed 000, SPEC §3): receives the map, start/goal and
+//! The LocalPathPlanning RT-component (seed 000, spec §3): receives the map, start/goal and
 //! the global grid path through its `LocalPath` service, the robot's position and deviation
 //! through data ports, and sends the (locally replanned) grid path and its control points
 //! to the GUI, DriveControl and bump detection.
@@ -9,22 +9,41 @@
 //! given and raises flags; the work happens in `on_execute`. Every call returns a `Result`:
 //! bad input gets an error naming the problem and changes nothing held.
 //!
-//! # When a local plan is made (000 §5.2.4, SPEC §3)
+//! # When a local plan is made (000 §5.2.4, spec §3)
 //!
 //! A *replan request* flag (000 §5.2.4.5 "局所経路の作成を行うためのフラグ") is raised by:
+//! - a new `GlobalPathCourse` (spec §3 Decision 0.2): the potential-field plan is made from
+//!   the current pose, so the start and goal posture that `PostureConsiderationLevel` names
+//!   are considered in every drive, and its control points replace the global ones (a
+//!   headless run and the page do exactly this);
 //! - a new `InDeviating` sample above `Deviatinglen` (000 §5.2.4.5);
-//! - an accepted `MapUpdate` while the goal is not reached (000 §5.2.4.6);
+//! - an accepted `MapUpdate` that changes a cell while the goal is not reached (000
+//!   §5.2.4.6; spec §3 Decision: an update that changes no cell requests nothing);
 //! - the `TargetArea` rule switching the driving direction (000 §5.2.4.4; **Decision**: the
 //!   switch must reach DriveControl, so it replans);
+//! - a changed planning parameter (`RouteRemakeDistance`, `dmin`,
+//!   `PostureConsiderationLevel`, `NotPostureDistance`: reflected `always`, so the next plan
+//!   uses them — and it is made at once);
+//! - after a failed plan, every 1 s of simulated time while the goal is held and not reached
+//!   (spec §3 Decision 0.2: the robot stands meanwhile, and the first success resumes the
+//!   drive);
+//! - activation (spec §3 Decision 0.2: the progress flags are reset, so the first tick after
+//!   activation plans and sends afresh);
 //! - [`LocalPathPlanning::request_replan`] (a GUI button; not in the seed).
 //!
 //! A request counts only while a plan can be made — map, start/goal and a held path are
 //! present, the goal is not reached and SafeMode is off — and is served once, on the next
-//! tick, however many triggers came before it. **Decision**: a new `GlobalPathCourse` does
-//! *not* replan: as 000 §5.2.4.3 says, its control points are made from the path as it is and
-//! sent (and it drops a pending request, since the path is new). Neither does the first (or
-//! any) `InCurrentPosition` by itself. After arrival nothing replans until a new
-//! `SetPosition`.
+//! tick, however many triggers came before it. If a new course arrives while no plan can be
+//! made, its control points are made from the path as it is and sent (000 §5.2.4.3). After
+//! arrival nothing replans until a new `SetPosition` (or an activation).
+//!
+//! # Escape from the margin (spec §3 Decision 0.2)
+//!
+//! If the current cell is within `dmin` of an obstacle without being one (tracking, a
+//! `MapUpdate` or rounding put the robot there), the position flag stays on: the local plan
+//! starts with the shortest step sequence out of the zone ([`crate::map::escape_route`]) and
+//! continues from there ([`LocalPathPlanning::escaped_steps`] says how many steps). `SetPosition`
+//! still checks start and goal strictly (000 §5.2.4.2).
 //!
 //! # Held path
 //!
@@ -32,72 +51,25 @@
 //! successful local plan (000 §5.2.4.8 "前回までに取得又は作成した経路"). A failed plan
 //! keeps it (a later `MapUpdate` may clear the way).
 
-use serde::{Deserialize, Serialize};
+mod params;
+pub use params::{LocalPathFlags, LocalPathPlanningParams};
 
-use crate::define_parameters;
 use crate::errors::LocalPathError;
 use crate::interfaces::{
     ControlPoints, Direction, GlobalPathCourse, GridPath, PlanningFailure, Pose,
 };
 use crate::local::{
     FieldExtent, LocalPlan, LocalPlanner, LocalTarget, PlanParams, PlanRequest, PotentialField,
-    control_points, nearest_path_index,
+    clear_cell, control_points, course_cells, nearest_path_index, plan_escaping,
 };
-use crate::map::{Cell, GridMap};
+use crate::map::{Cell, GridMap, MapUpdate};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick, Time, TimedDouble,
+    Component, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDouble,
     TimedPosition,
 };
 
-define_parameters! {
-    /// The configuration parameters of 000 §4.2, all reflected `always` (常時).
-    pub struct LocalPathPlanningParams {
-        /// `RouteRemakeDistance` \[m\]: path distance from the current position to the local
-        /// target (局所経路を生成する際の現在位置から目標位置までの経路上の距離).
-        route_remake_distance: f64 = ("RouteRemakeDistance", "m", 10.0, 0.0, f64::INFINITY, Always,
-            "path distance from the current position to the local target"),
-        /// `Deviatinglen` \[m\]: deviation that triggers a local replan (経路逸脱限界距離).
-        deviatinglen: f64 = ("Deviatinglen", "m", 0.1, 0.0, f64::INFINITY, Always,
-            "deviation from the path that triggers a local replan"),
-        /// `dmin` \[m\]: closest allowed approach to an obstacle (障害物に近づくことができる距離).
-        /// The seed's table gives its unit as "-"; it is compared with obstacle distances in
-        /// metres, so SPEC §3 gives `m`.
-        dmin: f64 = ("dmin", "m", 0.5, 0.0, f64::INFINITY, Always,
-            "closest allowed approach to an obstacle"),
-        /// `PostureConsiderationLevel` \[%\]: weight of the start/goal posture
-        /// (スタート姿勢・ゴール姿勢の考慮レベル).
-        posture_consideration_level: f64 = ("PostureConsiderationLevel", "%", 85.0, 0.0, 100.0, Always,
-            "weight of the start and goal posture"),
-        /// `NotPostureDistance` \[m\]: within this straight distance of the goal, posture is
-        /// ignored (姿勢を考慮せずに経路生成を行う目標位置からの距離).
-        not_posture_distance: f64 = ("NotPostureDistance", "m", 1.0, 0.0, f64::INFINITY, Always,
-            "within this straight distance of the goal the posture is not considered"),
-        /// `TargetArea` \[m\]: near the goal, forward/backward is chosen by where the goal lies
-        /// (目標位置付近において前進、後進を変更しつつ目標位置に近づく経路生成を行う範囲).
-        target_area: f64 = ("TargetArea", "m", 0.5, 0.0, f64::INFINITY, Always,
-            "near the goal, forward or backward is chosen by where the goal lies"),
-    }
-}
-
-/// The held flags of 000 §5.2.4 ("…を取得したか判断するためのフラグ"), readable for the GUI.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub struct LocalPathFlags {
-    /// A map is held (`SetMap`, 000 §5.2.4.1).
-    pub map: bool,
-    /// Start and goal are held and passable (`SetPosition`, 000 §5.2.4.2).
-    pub position: bool,
-    /// A grid path is held (`GlobalPathCourse`, 000 §5.2.4.3).
-    pub path: bool,
-    /// The current position is in the map and passable (000 §5.2.4.4).
-    pub current_position: bool,
-    /// The goal is reached: straight distance ≤ `GridSize` (000 §5.2.4.4). Latched until the
-    /// next `SetPosition` or `Clear`.
-    pub arrived: bool,
-    /// A local replan is requested (000 §5.2.4.5, §5.2.4.6).
-    pub replan_request: bool,
-    /// SafeMode: halted until the next `SetPosition` (SPEC §3 Decision).
-    pub safe_mode: bool,
-}
+/// After a failed plan, how long until the next attempt \[ns\] (spec §3 Decision 0.2).
+pub const RETRY_NS: u64 = 1_000_000_000;
 
 /// What was last sent, to send only on change (000 §5.2.4.13).
 #[derive(Debug, Clone, PartialEq)]
@@ -147,6 +119,12 @@ pub struct LocalPathPlanning {
     control_points: Option<ControlPoints>,
     last_failure: Option<PlanningFailure>,
     plan_count: u64,
+    /// After a failure: when the next attempt is made \[ns\].
+    retry_at_ns: Option<u64>,
+    /// The planning parameters of the last plan (a change replans).
+    planned_with: Option<PlanParams>,
+    /// Steps of the last plan that lead out of the `dmin` zone.
+    escaped: usize,
 }
 
 const PLANNER: &str = "LocalPathPlanning";
@@ -190,6 +168,9 @@ impl LocalPathPlanning {
             control_points: None,
             last_failure: None,
             plan_count: 0,
+            retry_at_ns: None,
+            planned_with: None,
+            escaped: 0,
         }
     }
 
@@ -240,8 +221,8 @@ impl LocalPathPlanning {
             .as_ref()
             .ok_or(LocalPathError::NoMap { call: CALL })?;
         let dmin = self.config.params().dmin;
-        check_clear(map, "start", start_x, start_y, dmin)?;
-        check_clear(map, "goal", goal_x, goal_y, dmin)?;
+        clear_cell(map, "start", start_x, start_y, dmin)?;
+        clear_cell(map, "goal", goal_x, goal_y, dmin)?;
         let start = Pose::new(start_x, start_y, start_angle);
         let goal = Pose::new(goal_x, goal_y, goal_angle);
         self.start = Some(start);
@@ -255,6 +236,7 @@ impl LocalPathPlanning {
         self.flags.arrived = libm::hypot(goal_x - start_x, goal_y - start_y) <= map.grid_size();
         self.flags.replan_request = false;
         self.flags.safe_mode = false;
+        self.retry_at_ns = None;
         // The field and local plan drawn were for the old start/goal.
         self.field_valid = false;
         self.plan = None;
@@ -283,9 +265,11 @@ impl LocalPathPlanning {
         self.merged_path.clear();
         self.control_points = None;
         self.last_failure = None;
+        self.retry_at_ns = None;
+        self.planned_with = None;
     }
 
-    /// `SafeMode` (000 §3.2.2.1 (3), T.B.D. in the seed). **Decision (SPEC §3)**: halt — the
+    /// `SafeMode` (000 §3.2.2.1 (3), T.B.D. in the seed). **Decision (spec §3)**: halt — the
     /// next tick sends an empty path and empty control points, and nothing is planned or
     /// sent until the next `SetPosition`.
     pub fn safe_mode(&mut self) {
@@ -293,9 +277,10 @@ impl LocalPathPlanning {
         self.flags.replan_request = false;
         self.send_global = false;
         self.send_empty = true;
+        self.retry_at_ns = None;
     }
 
-    /// `SetMap` (000 §3.2.2.1 (4), §5.2.4.1, SPEC §2): `map_data[x + y · map_length_x]`, 0
+    /// `SetMap` (000 §3.2.2.1 (4), §5.2.4.1, spec §2): `map_data[x + y · map_length_x]`, 0
     /// free / 1 obstacle. Refused (the old map stays) for a wrong length, a value other than
     /// 0/1, a dimension < 1 or a bad `grid_size`.
     pub fn set_map(
@@ -330,35 +315,27 @@ impl LocalPathPlanning {
         self.refresh_current_flag();
     }
 
-    /// `MapUpdate` (000 §3.2.2.1 (5), §5.2.4.6, SPEC §2): sets the listed cells, atomically;
-    /// the timestamp becomes the map's version. If the goal is not reached (and a plan is
-    /// held), a local replan is requested.
-    pub fn map_update(
-        &mut self,
-        x: &[i32],
-        y: &[i32],
-        value: &[i16],
-        num: i32,
-        sec: u32,
-        nsec: u32,
-    ) -> crate::Result<()> {
-        if nsec >= 1_000_000_000 {
-            return Err(LocalPathError::BadTimestamp { nsec }.into());
-        }
+    /// `MapUpdate` (000 §3.2.2.1 (5), §5.2.4.6, spec §2): sets the listed cells, atomically;
+    /// the timestamp becomes the map's version. Returns the number of cells that changed. If
+    /// a cell changed and the goal is not reached (and a plan is held), a local replan is
+    /// requested; an update that changes nothing requests nothing (spec §3 Decision).
+    pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
         let map = self
             .map
             .as_mut()
             .ok_or(LocalPathError::NoMap { call: "MapUpdate" })?;
-        map.map_update(x, y, value, num, Time { sec, nsec })?;
-        self.refresh_current_flag();
-        self.raise_replan_request();
-        Ok(())
+        let changed = map.map_update(update)?;
+        if changed > 0 {
+            self.refresh_current_flag();
+            self.raise_replan_request();
+        }
+        Ok(changed)
     }
 
     /// `GlobalPathCourse` (000 §3.2.2.1 (6), §5.2.4.3): holds the grid path (start first);
     /// the next tick makes its control points and sends them (once start/goal are held).
     /// Refused (nothing changes) unless both arrays have `num` entries, `num` ≥ 1, every cell
-    /// is in the map and consecutive cells are 8-neighbours (SPEC §3 Decision).
+    /// is in the map and consecutive cells are 8-neighbours (spec §3 Decision).
     pub fn global_path_course(
         &mut self,
         grid_path_x: &[i32],
@@ -368,54 +345,16 @@ impl LocalPathPlanning {
         let map = self.map.as_ref().ok_or(LocalPathError::NoMap {
             call: "GlobalPathCourse",
         })?;
-        for (array, len) in [
-            ("GridPathX", grid_path_x.len()),
-            ("GridPathY", grid_path_y.len()),
-        ] {
-            if num < 0 || len != num as usize {
-                return Err(LocalPathError::PathLength { array, len, num }.into());
-            }
-        }
-        if num == 0 {
-            return Err(LocalPathError::EmptyPath.into());
-        }
-        let mut cells = Vec::with_capacity(grid_path_x.len());
-        for (index, (&x, &y)) in grid_path_x.iter().zip(grid_path_y).enumerate() {
-            let (x, y) = (i64::from(x), i64::from(y));
-            if !map.contains(x, y) {
-                return Err(LocalPathError::PathCellOutside {
-                    index,
-                    x,
-                    y,
-                    width: map.width(),
-                    height: map.height(),
-                }
-                .into());
-            }
-            if index > 0 {
-                let (px, py) = (
-                    i64::from(grid_path_x[index - 1]),
-                    i64::from(grid_path_y[index - 1]),
-                );
-                let (dx, dy) = ((x - px).abs(), (y - py).abs());
-                if dx > 1 || dy > 1 || (dx == 0 && dy == 0) {
-                    return Err(LocalPathError::PathNotAdjacent {
-                        index,
-                        from: (px, py),
-                        to: (x, y),
-                    }
-                    .into());
-                }
-            }
-            cells.push((x as usize, y as usize));
-        }
+        let cells = course_cells(map, grid_path_x, grid_path_y, num)?;
         self.held_path = cells;
         self.match_index = 0;
         self.flags.path = true;
-        self.flags.replan_request = false;
-        self.send_global = true;
         self.field_valid = false;
         self.plan = None;
+        // Spec §3 Decision 0.2: the next tick makes the potential-field plan from the current
+        // pose; if none can be made, the course is sent as it is (000 §5.2.4.3).
+        self.flags.replan_request = false;
+        self.send_global = !self.raise_replan_request();
         Ok(())
     }
 
@@ -545,6 +484,32 @@ impl LocalPathPlanning {
         self.plan_count
     }
 
+    /// How many steps of the last local plan lead out of the `dmin` zone (0: the robot stood
+    /// clear; spec §3 Decision 0.2 "escape from the margin").
+    pub fn escaped_steps(&self) -> usize {
+        self.escaped
+    }
+
+    /// After a failed plan: the simulated time \[ns\] of the next attempt (spec §3
+    /// Decision 0.2); `None` when no retry is due.
+    pub fn retry_at_ns(&self) -> Option<u64> {
+        self.retry_at_ns
+    }
+
+    /// Whether nothing waits to be planned or sent: no replan request, no course to send,
+    /// no parameter change to plan with.
+    pub fn is_settled(&self) -> bool {
+        let params_changed = self.can_replan()
+            && self
+                .planned_with
+                .is_some_and(|p| p != plan_params(self.config.params()));
+        let pending = (self.flags.replan_request && self.can_replan())
+            || self.send_global
+            || self.send_empty
+            || params_changed;
+        !pending
+    }
+
     // ----- internals -----
 
     fn can_replan(&self) -> bool {
@@ -560,20 +525,23 @@ impl LocalPathPlanning {
         ok
     }
 
+    /// The position flag (000 §5.2.4.4): the current cell is in the map and not an obstacle.
+    /// A cell within `dmin` keeps it on (spec §3 Decision 0.2: the plan escapes first).
     fn refresh_current_flag(&mut self) {
-        let dmin = self.config.params().dmin;
         self.flags.current_position = match (&self.map, self.current) {
             (Some(map), Some(p)) => map
                 .world_to_cell(p.x, p.y)
-                .is_some_and(|c| map.is_clear(c, dmin)),
+                .is_some_and(|(x, y)| !map.is_obstacle(x as i64, y as i64)),
             _ => false,
         };
     }
 
-    /// SPEC §3 step 1 (000 §5.2.4.4).
+    /// spec §3 step 1 (000 §5.2.4.4).
     fn update_current(&mut self, p: &TimedPosition, params: &LocalPathPlanningParams) {
         let pose = Pose::new(p.x, p.y, p.theta);
-        if !pose.is_finite() {
+        // A pose that is not finite, or whose timestamp is not valid (spec §4 Decision 0.2,
+        // the one check `Time::checked`), cannot be trusted: no current position.
+        if !pose.is_finite() || p.tm.checked("InCurrentPosition").is_err() {
             self.flags.current_position = false;
             return;
         }
@@ -627,38 +595,41 @@ impl LocalPathPlanning {
         self.send(tick, cells, points);
     }
 
-    /// SPEC §3 steps 3–8.
+    /// Spec §3 steps 3–8, after escaping the `dmin` zone if the robot stands in it.
     fn replan(&mut self, tick: &Tick, params: &LocalPathPlanningParams) {
         let (Some(map), Some(goal), Some(current)) = (self.map.as_ref(), self.goal, self.current)
         else {
             return;
         };
+        let plan_params = plan_params(params);
+        self.planned_with = Some(plan_params);
+        self.plan_count += 1;
         let request = PlanRequest {
             held_path: &self.held_path,
             match_from: self.match_index,
             current,
             goal,
             direction: self.direction,
-            params: PlanParams {
-                route_remake_distance: params.route_remake_distance,
-                dmin: params.dmin,
-                posture_consideration_level: params.posture_consideration_level,
-                not_posture_distance: params.not_posture_distance,
-            },
+            params: plan_params,
             extent: self.extent,
         };
-        self.plan_count += 1;
-        let result = self.planner.plan(map, &request);
+        // Spec §3 Decision 0.2: from inside the dmin zone, the plan escapes first.
+        let result = plan_escaping(&mut self.planner, map, &request);
         self.field_valid = self.planner.field_is_fresh();
         match result {
-            Ok(plan) => {
+            Ok((plan, escaped)) => {
+                self.escaped = escaped;
+                self.retry_at_ns = None;
                 self.held_path = plan.merged_path.clone();
                 self.match_index = 0;
                 self.send(tick, plan.merged_path.clone(), plan.control_points.clone());
                 self.plan = Some(plan);
             }
             Err(e) => {
+                self.escaped = 0;
                 self.plan = None;
+                // Spec §3 Decision 0.2: try again in 1 s while the goal is held.
+                self.retry_at_ns = Some(tick.time_ns.saturating_add(RETRY_NS));
                 self.fail(tick, e);
             }
         }
@@ -715,27 +686,14 @@ impl LocalPathPlanning {
     }
 }
 
-fn check_clear(
-    map: &GridMap,
-    what: &'static str,
-    x: f64,
-    y: f64,
-    dmin: f64,
-) -> Result<(), LocalPathError> {
-    let cell = map
-        .world_to_cell(x, y)
-        .ok_or(LocalPathError::OutsideMap { what, x, y })?;
-    if !map.is_clear(cell, dmin) {
-        return Err(LocalPathError::NotClear {
-            what,
-            x,
-            y,
-            cell,
-            distance: map.obstacle_distance(cell),
-            dmin,
-        });
+/// The planning parameters of `params` (the ones a plan depends on).
+fn plan_params(params: &LocalPathPlanningParams) -> PlanParams {
+    PlanParams {
+        route_remake_distance: params.route_remake_distance,
+        dmin: params.dmin,
+        posture_consideration_level: params.posture_consideration_level,
+        not_posture_distance: params.not_posture_distance,
     }
-    Ok(())
 }
 
 impl Component for LocalPathPlanning {
@@ -751,17 +709,27 @@ impl Component for LocalPathPlanning {
         Some(&self.config)
     }
 
-    /// 000 §5.2.3: initialisation. Stale port data is dropped and a pending replan request
-    /// cleared. **Decision**: what the services delivered (map, start/goal, path) is kept,
-    /// since in rtnav they may be called before activation.
+    /// 000 §5.2.3: initialisation. Stale port data is dropped. Spec §3 Decision 0.2: what
+    /// the services delivered (map, start/goal, held path) is kept — it is the service
+    /// side's, and may come before activation — and the component's own progress flags are
+    /// reset (arrived, what was last sent, a pending retry), with a replan requested, so the
+    /// first tick after activation plans and sends afresh.
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
         self.in_current_position.clear();
         self.in_deviating.clear();
+        self.sent = None;
+        self.retry_at_ns = None;
+        if let (Some(map), Some(goal), Some(cur)) = (self.map.as_ref(), self.goal, self.current) {
+            self.flags.arrived = libm::hypot(goal.x - cur.x, goal.y - cur.y) <= map.grid_size();
+        }
         self.flags.replan_request = false;
+        if !self.raise_replan_request() && self.flags.path && self.flags.position {
+            self.send_global = true;
+        }
         Ok(())
     }
 
-    /// 000 §5.2.4, SPEC §3 "Behaviour on every tick".
+    /// 000 §5.2.4, spec §3 "Behaviour on every tick".
     fn on_execute(&mut self, tick: &Tick) -> ReturnCode {
         let params = *self.config.params();
         if self.send_empty {
@@ -780,11 +748,20 @@ impl Component for LocalPathPlanning {
         if self.in_deviating.is_new()
             && let Some(d) = self.in_deviating.read()
             && d.data.is_finite()
+            && d.tm.checked("InDeviating").is_ok()
         {
             self.deviation = Some(d.data);
             if d.data > params.deviatinglen {
                 self.raise_replan_request();
             }
+        }
+        // A retry after a failure (spec §3 Decision 0.2), a changed planning parameter.
+        if self.retry_at_ns.is_some_and(|at| tick.time_ns >= at) {
+            self.retry_at_ns = None;
+            self.raise_replan_request();
+        }
+        if self.planned_with.is_some_and(|p| p != plan_params(&params)) {
+            self.raise_replan_request();
         }
         // Steps 3–8: a local plan, if requested (000 §5.2.4.8–13); else the new global
         // path as it is (000 §5.2.4.3).

@@ -1,0 +1,114 @@
+//! Errors building, loading or updating a grid map (spec §2).
+
+/// Errors building, loading or updating a grid map (spec §2).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum MapError {
+    /// A dimension of zero (or negative in the source data).
+    #[error("map dimension {axis} = {value} must be at least 1")]
+    BadDimension {
+        /// `MapLengthX` or `MapLengthY`.
+        axis: &'static str,
+        /// The value given.
+        value: i64,
+    },
+    /// More cells than the map size limit.
+    #[error("map of {width}×{height} = {cells} cells exceeds the limit of {limit} cells")]
+    TooLarge {
+        /// Cells in x.
+        width: usize,
+        /// Cells in y.
+        height: usize,
+        /// width × height.
+        cells: u64,
+        /// The limit.
+        limit: usize,
+    },
+    /// `GridSize` zero, negative or not finite.
+    #[error("GridSize {value} must be positive and finite")]
+    BadGridSize {
+        /// The value given.
+        value: f64,
+    },
+    /// An origin coordinate that is not finite.
+    #[error("map origin ({x}, {y}) must be finite")]
+    BadOrigin {
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+    },
+    /// `MapData` of the wrong length.
+    #[error("MapData has {len} cells, expected MapLengthX × MapLengthY = {expected}")]
+    DataLength {
+        /// Cells given.
+        len: usize,
+        /// Cells expected.
+        expected: usize,
+    },
+    /// A cell value other than 0 (free) or 1 (obstacle).
+    #[error("{what}[{index}] = {value}: a cell must be 0 (free) or 1 (obstacle)")]
+    BadCellValue {
+        /// `MapData` or `value` (MapUpdate).
+        what: &'static str,
+        /// Index in the array.
+        index: usize,
+        /// The value given.
+        value: i64,
+    },
+    /// MapUpdate arrays whose length differs from `num`.
+    #[error("MapUpdate: {array} has {len} entries, but num = {num}")]
+    UpdateLength {
+        /// `X`, `Y` or `value`.
+        array: &'static str,
+        /// Its length.
+        len: usize,
+        /// `num` as given.
+        num: i64,
+    },
+    /// A cell index outside the map.
+    #[error("{what}: cell ({x}, {y}) is outside the {width}×{height} map")]
+    CellOutside {
+        /// Which call or array.
+        what: &'static str,
+        /// x index.
+        x: i64,
+        /// y index.
+        y: i64,
+        /// Map width.
+        width: usize,
+        /// Map height.
+        height: usize,
+    },
+    /// A map file that cannot be read as its format requires.
+    #[error("{format}{}: {reason}", at_line(*line))]
+    Format {
+        /// `rtnav JSON map`, `ROS map YAML`, `ROS map image`, `MovingAI .map`,
+        /// `MovingAI .scen`.
+        format: &'static str,
+        /// 1-based line, if the problem has one.
+        line: Option<usize>,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A map file that cannot be read (native convenience loaders only).
+    #[error("cannot read `{path}`: {reason}")]
+    Io {
+        /// The file.
+        path: String,
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// A timestamp whose `nsec` is not below 10⁹ (spec §4 Decision 0.2).
+    #[error("{what}: timestamp nsec = {nsec} must be below 1000000000")]
+    BadTimestamp {
+        /// Where it came in, e.g. `MapUpdate`.
+        what: &'static str,
+        /// The nanoseconds given.
+        nsec: u32,
+    },
+}
+
+fn at_line(line: Option<usize>) -> String {
+    line.map(|l| format!(" (line {l})")).unwrap_or_default()
+}

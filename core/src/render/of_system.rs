@@ -1,0 +1,123 @@
+//! Drawing a [`System`]: its plain-data [`Scene`] (map, `dmin`, potential field, paths,
+//! control points, local target, robot, trail, start and goal) and
+//! [`Renderer::render_system`](super::Renderer::render_system), for PNGs and the browser
+//! canvas. Drawing only reads the system.
+
+use crate::components::LocalPathPlanning;
+use crate::interfaces::Pose;
+use crate::local::{CellState, PotentialField};
+use crate::system::System;
+
+use super::scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
+
+/// The potential field in the renderer's form (`f64` and [`FieldCellState`] per cell),
+/// converted when LocalPathPlanning's plan count changes: a drawing cache, kept by the
+/// renderer.
+#[derive(Debug, Clone, Default)]
+pub struct FieldBuffers {
+    key: Option<u64>,
+    potential: Vec<f64>,
+    state: Vec<FieldCellState>,
+}
+
+fn field_state(s: CellState) -> FieldCellState {
+    match s {
+        CellState::Reached => FieldCellState::Reached,
+        CellState::Impassable => FieldCellState::Impassable,
+        CellState::Unreached => FieldCellState::Unreached,
+    }
+}
+
+impl FieldBuffers {
+    /// Converts `field` if `key` differs from the last one converted; drops it if there is
+    /// none, or if it does not have `cells` cells (a field of another map, just after a
+    /// load).
+    fn refresh(&mut self, field: Option<&PotentialField>, key: u64, cells: usize) {
+        match field {
+            Some(f) if f.cells().len() == cells => {
+                if self.key != Some(key) || self.potential.len() != cells {
+                    self.potential.clear();
+                    self.potential.extend(f.cells().iter().map(|c| c.potential));
+                    self.state.clear();
+                    self.state.extend(
+                        f.state_codes()
+                            .iter()
+                            .map(|&c| field_state(CellState::from_code(c))),
+                    );
+                    self.key = Some(key);
+                }
+            }
+            _ => {
+                self.potential.clear();
+                self.state.clear();
+                self.key = None;
+            }
+        }
+    }
+
+    fn view(&self) -> Option<FieldView<'_>> {
+        let key = self.key?;
+        Some(FieldView {
+            potential: &self.potential,
+            state: &self.state,
+            key,
+        })
+    }
+}
+
+/// The caption under the picture: simulated time and what the robot is doing.
+pub fn caption(system: &System) -> String {
+    format!("t = {:.1} s  {}", system.time(), system.status())
+}
+
+/// The scene of `system` now with `layers` and `caption`; `None` before a map is loaded.
+/// The field's key is LocalPathPlanning's plan count, the map's key the wiring's, so the
+/// renderer recolours its cached layers only when they change.
+pub fn scene_of<'a>(
+    system: &'a System,
+    buffers: &'a mut FieldBuffers,
+    caption: &'a str,
+    layers: Layers,
+) -> Option<Scene<'a>> {
+    let wiring = system.wiring();
+    let map = wiring.map()?;
+    let lpp: &LocalPathPlanning = wiring.local_path_planning();
+    buffers.refresh(
+        lpp.potential_field(),
+        lpp.plan_count(),
+        map.width() * map.height(),
+    );
+    let buffers: &'a FieldBuffers = buffers;
+    let local_target = lpp.local_target().map(|t| {
+        let (x, y) = map.cell_center(t.cell);
+        Pose::new(x, y, t.heading)
+    });
+    let geometry = wiring.motor_control().geometry();
+    let physics = wiring.physics().physics();
+    let robot = RobotView {
+        pose: physics.pose(),
+        body_radius: geometry.radius_of_body_area,
+        axle_length: geometry.drive.axle_length(),
+        wheel_radius: geometry.drive.radius_left(),
+        bumped: physics.state().in_contact,
+    };
+    let mission = system.mission();
+    let placed = mission.start().is_some() || system.is_driving();
+    Some(Scene {
+        map,
+        map_key: wiring.map_key(),
+        dmin: lpp.params().dmin,
+        field: buffers.view(),
+        global_path: mission.route(),
+        local_path: lpp.merged_path(),
+        control_points: lpp.control_points().map_or(&[], |c| &c.points[..]),
+        local_target,
+        robot: placed.then_some(robot),
+        trail: system.record().trail(),
+        start: mission.start(),
+        goal: mission.goal(),
+        direction: lpp.direction(),
+        caption,
+        layers,
+    })
+}

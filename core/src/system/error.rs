@@ -1,0 +1,208 @@
+//! Errors of the whole system (`crate::system`), one enum per part: requests to the system,
+//! scenario files, the page's session, and the configuration bundle.
+
+use crate::rtc::ConfigError;
+
+/// A request to the whole system that cannot be carried out. Nothing held changes when one
+/// is returned.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SystemError {
+    /// An input port the system cannot write into ([`System::inject_input`](crate::system::System::inject_input)).
+    #[error("{component} has no input port `{port}` to inject into (ports: {known})")]
+    UnknownPort {
+        /// The component named.
+        component: String,
+        /// The port named.
+        port: String,
+        /// The ports that can be injected into.
+        known: &'static str,
+    },
+    /// A request that needs a map before one is loaded.
+    #[error("{call}: no map is loaded")]
+    NoMap {
+        /// The request, e.g. `MapUpdate`.
+        call: &'static str,
+    },
+    /// A component name that is not one of the system's.
+    #[error("no component named `{name}` (expected one of {expected})")]
+    UnknownComponent {
+        /// The name given.
+        name: String,
+        /// The names known.
+        expected: String,
+    },
+    /// A component without configuration parameters.
+    #[error("component `{component}` has no configuration parameters")]
+    NoConfiguration {
+        /// The component.
+        component: String,
+    },
+    /// A request that places the robot, made while it drives.
+    #[error("{call}: the robot is driving (deactivate the physics first, or set only a new goal)")]
+    Driving {
+        /// The request.
+        call: &'static str,
+    },
+    /// A new goal without a start: the robot has not been placed yet.
+    #[error("{call}: no start pose yet (set start and goal first)")]
+    NoStart {
+        /// The request.
+        call: &'static str,
+    },
+    /// A number that must be finite (and, for times, non-negative) is not.
+    #[error("{what} = {value} must be finite{}", if *non_negative { " and ≥ 0" } else { "" })]
+    BadNumber {
+        /// What it is, e.g. `run_until seconds`.
+        what: &'static str,
+        /// The value given.
+        value: f64,
+        /// Whether it must also be ≥ 0.
+        non_negative: bool,
+    },
+    /// A cell that is not in the map.
+    #[error("cell ({x}, {y}) is outside the map ({width} × {height} cells)")]
+    CellOutsideMap {
+        /// Column asked for.
+        x: i64,
+        /// Row asked for.
+        y: i64,
+        /// Cells in x.
+        width: usize,
+        /// Cells in y.
+        height: usize,
+    },
+    /// A telemetry history of capacity zero.
+    #[error("telemetry capacity must be at least 1")]
+    ZeroCapacity,
+    /// A configuration that gives the two planners different `dmin`s (spec §3 Decision 0.2:
+    /// one value for the system).
+    #[error(
+        "dmin must be one value: {first} gives {first_value} m, {second} gives {second_value} m"
+    )]
+    DminMismatch {
+        /// The first component's instance name.
+        first: &'static str,
+        /// Its `dmin` \[m\].
+        first_value: f64,
+        /// The second component's instance name.
+        second: &'static str,
+        /// Its `dmin` \[m\].
+        second_value: f64,
+    },
+}
+
+/// A scenario file that cannot be read or used, or a file it names that cannot be supplied.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ScenarioError {
+    /// A scenario file that cannot be read or used.
+    #[error("scenario `{scenario}`: {reason}")]
+    Scenario {
+        /// The scenario's name or file.
+        scenario: String,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A file a scenario names that the resolver cannot supply.
+    #[error("cannot read `{path}`: {reason}")]
+    File {
+        /// The path as the scenario gives it.
+        path: String,
+        /// Why.
+        reason: String,
+    },
+}
+
+/// A request of the page's session (its clock, its share links) that cannot be carried out.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SessionError {
+    /// A share link's token that cannot be used.
+    #[error("share link: {reason}")]
+    BadShareToken {
+        /// Why.
+        reason: String,
+    },
+    /// A clock speed outside the range offered.
+    #[error("speed {speed}× is outside {min}× to {max}×")]
+    BadSpeed {
+        /// The speed asked for.
+        speed: f64,
+        /// The slowest.
+        min: f64,
+        /// The fastest.
+        max: f64,
+    },
+}
+
+/// A configuration bundle (`System::load_conf`) that cannot be read or applied; nothing
+/// changes.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ConfBundleError {
+    /// A line of a configuration bundle (`System::load_conf`) before the first component
+    /// marker that is neither a comment nor blank.
+    #[error(
+        "configuration file line {line}: `{text}` is not inside a component's block \
+         (a block starts with a marker line `# [InstanceName]`)"
+    )]
+    ConfOutsideBlock {
+        /// 1-based line in the whole file.
+        line: usize,
+        /// The line as written.
+        text: String,
+    },
+    /// A block marker `# [NAME]` that names no component with configuration parameters.
+    #[error(
+        "configuration file line {line}: marker `# [{name}]` names no component with \
+         configuration parameters (expected one of {expected})"
+    )]
+    ConfUnknownComponent {
+        /// 1-based line of the marker in the whole file.
+        line: usize,
+        /// The name in the marker.
+        name: String,
+        /// The instance names known.
+        expected: String,
+    },
+    /// A second block for the same component.
+    #[error(
+        "configuration file line {line}: a second block for `{component}` (its first block \
+         starts at line {first})"
+    )]
+    ConfDuplicateComponent {
+        /// 1-based line of the second marker.
+        line: usize,
+        /// The component's instance name.
+        component: String,
+        /// 1-based line of the first marker.
+        first: usize,
+    },
+    /// A component's block that cannot be read or applied (unknown key, bad value, value
+    /// out of range, unknown configuration set).
+    #[error("configuration file line {line}, component `{component}`: {}", conf_problem(.problem))]
+    ConfBlock {
+        /// The component's instance name.
+        component: String,
+        /// 1-based line in the whole file.
+        line: usize,
+        /// The problem, as the component's configuration reports it.
+        problem: ConfigError,
+    },
+}
+
+/// A `.conf` problem without its line (the bundle's error names the line of the whole file).
+fn conf_problem(e: &ConfigError) -> String {
+    let mut e = e.clone();
+    match &mut e {
+        ConfigError::UnknownParameter { line, .. }
+        | ConfigError::OutOfRange { line, .. }
+        | ConfigError::BadValue { line, .. } => *line = None,
+        ConfigError::Syntax { text, reason, .. } => {
+            return format!("cannot read `{text}`: {reason}");
+        }
+        _ => {}
+    }
+    e.to_string()
+}

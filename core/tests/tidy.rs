@@ -1,0 +1,124 @@
+//! Tidy checks of the source itself (matklad's "tidy" tests): the sizes and import structure
+//! the architecture promises (`ARCHITECTURE.md`, "Architecture invariants").
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+#[test]
+fn the_file_that_holds_system_is_short_and_no_source_file_is_over_800_lines() {
+    let system = std::fs::read_to_string(src().join("system/robot.rs")).unwrap();
+    assert!(system.contains("pub struct System {"));
+    let n = system.lines().count();
+    assert!(n <= 400, "system/robot.rs has {n} lines (at most 400)");
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let long: Vec<String> = files
+        .iter()
+        .filter_map(|f| {
+            let n = std::fs::read_to_string(f).unwrap().lines().count();
+            (n > 800).then(|| format!("{} ({n} lines)", f.display()))
+        })
+        .collect();
+    assert!(long.is_empty(), "over 800 lines: {long:?}");
+}
+
+/// The sibling modules a file of `dir` refers to (`super::name`, `use super::{a, b}`).
+fn siblings(text: &str, names: &[String]) -> Vec<String> {
+    let mut found = Vec::new();
+    let code: String = text
+        .lines()
+        .take_while(|l| !l.starts_with("#[cfg(test)]"))
+        .filter(|l| !l.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    for name in names {
+        let direct = format!("super::{name}");
+        let grouped = code.match_indices("use super::{").any(|(i, _)| {
+            let rest = &code[i + "use super::{".len()..];
+            let group = &rest[..rest.find('}').unwrap_or(rest.len())];
+            group
+                .split(',')
+                .any(|item| item.trim().split("::").next() == Some(name.as_str()))
+        });
+        let plain = code.match_indices(&direct).any(|(i, _)| {
+            code[i + direct.len()..]
+                .chars()
+                .next()
+                .is_some_and(|c| c == ':' || c == ';' || c == ',' || c == '}')
+        });
+        if grouped || plain {
+            found.push(name.clone());
+        }
+    }
+    found
+}
+
+fn cycles_in(dir: &str) -> Vec<Vec<String>> {
+    let dir = src().join(dir);
+    let mut names = Vec::new();
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
+        if path.extension().is_some_and(|e| e == "rs") && stem != "mod" {
+            names.push(stem);
+        }
+    }
+    names.sort();
+    let graph: BTreeMap<String, Vec<String>> = names
+        .iter()
+        .map(|n| {
+            let text = std::fs::read_to_string(dir.join(format!("{n}.rs"))).unwrap();
+            let mut deps = siblings(&text, &names);
+            deps.retain(|d| d != n);
+            (n.clone(), deps)
+        })
+        .collect();
+    // Every cycle found by a depth-first search from each file (reported once per start).
+    let mut cycles = Vec::new();
+    for start in &names {
+        let mut stack = vec![(start.clone(), vec![start.clone()])];
+        while let Some((at, path)) = stack.pop() {
+            for next in &graph[&at] {
+                if next == start {
+                    cycles.push(path.clone());
+                } else if !path.contains(next) && next > start {
+                    let mut p = path.clone();
+                    p.push(next.clone());
+                    stack.push((next.clone(), p));
+                }
+            }
+        }
+    }
+    cycles
+}
+
+#[test]
+fn no_two_files_of_system_or_render_import_each_other_in_a_circle() {
+    for dir in ["system", "render"] {
+        let cycles = cycles_in(dir);
+        assert!(cycles.is_empty(), "{dir}/: import circles {cycles:?}");
+    }
+}
+
+#[test]
+fn errors_rs_keeps_only_the_crate_error_and_the_re_exports() {
+    let text = std::fs::read_to_string(src().join("errors.rs")).unwrap();
+    let enums = text.matches("pub enum ").count();
+    assert_eq!(enums, 1, "errors.rs defines only `Error`");
+    assert!(text.contains("pub enum Error {") && text.contains("pub type Result"));
+}

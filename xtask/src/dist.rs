@@ -1,0 +1,192 @@
+//! `cargo xtask dist [DIR]`: the page as a static folder (default `dist/`) that works from any
+//! static file server, at any path (`https://example.org/rtnav/`): no server of ours.
+//!
+//! It holds the page (`index.html`, `style.css`, `main.js`, `js/`), the wasm package
+//! (`pkg/rtnav_wasm.js`, `pkg/rtnav_wasm_bg.wasm`) and the scenarios with their maps
+//! (`fixtures/`, as `crate::fixtures` stages them: the repository's, and the external data's
+//! when it is there). Every URL the page uses is relative to the page, so the folder can be
+//! served under any sub-path; nothing needs a special header (a server that does not send
+//! `application/wasm` for `.wasm` only costs wasm-bindgen's streaming compile).
+
+use std::path::{Path, PathBuf};
+
+use crate::Result;
+use crate::tools;
+use crate::wasm;
+
+/// The folder `cargo xtask dist` writes when not told.
+pub fn default_dir() -> PathBuf {
+    tools::repo_root().join("dist")
+}
+
+/// Builds the wasm (release) and writes the folder.
+pub fn build(dir: &Path) -> Result<wasm::Built> {
+    let built = wasm::build_pkg(wasm::Profile::Release)?;
+    assemble(dir)?;
+    Ok(built)
+}
+
+/// Writes the folder from `web/` and the wasm package already in `web/pkg` (emptied first).
+pub fn assemble(dir: &Path) -> Result {
+    let web = tools::repo_root().join("web");
+    for file in [wasm::module_path(), wasm::glue_path()] {
+        if !file.is_file() {
+            return Err(format!(
+                "{} is missing: build the wasm first (`cargo xtask build-wasm`)",
+                file.display()
+            )
+            .into());
+        }
+    }
+    if dir.exists() {
+        std::fs::remove_dir_all(dir).map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
+    }
+    std::fs::create_dir_all(dir)?;
+    // The page's own files: everything under web/ but what xtask makes there.
+    copy_tree(&web, dir, &|rel: &Path| {
+        let first = rel.components().next().map(|c| c.as_os_str().to_owned());
+        !first.is_some_and(|f| f == "pkg" || f == "fixtures" || f == "node_modules")
+            && !rel
+                .file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+    })?;
+    let pkg = dir.join("pkg");
+    std::fs::create_dir_all(&pkg)?;
+    for file in [wasm::module_path(), wasm::glue_path()] {
+        let name = file.file_name().ok_or("a file without a name")?;
+        std::fs::copy(&file, pkg.join(name))?;
+    }
+    let n = crate::fixtures::stage_into(&tools::repo_root(), &dir.join("fixtures"))?;
+    check_relative(dir)?;
+    println!(
+        "xtask: {} written: the page, the wasm and {n} scenarios (serve it from any static \
+         server, under any path)",
+        dir.display()
+    );
+    Ok(())
+}
+
+/// Copies the files of `from` whose path (relative to `from`) `keep` accepts into `to`.
+fn copy_tree(from: &Path, to: &Path, keep: &dyn Fn(&Path) -> bool) -> Result {
+    let mut stack = vec![PathBuf::new()];
+    while let Some(rel) = stack.pop() {
+        let mut entries: Vec<_> = std::fs::read_dir(from.join(&rel))?
+            .filter_map(|e| e.ok())
+            .collect();
+        entries.sort_by_key(|e| e.file_name());
+        for e in entries {
+            let rel = rel.join(e.file_name());
+            if !keep(&rel) {
+                continue;
+            }
+            if e.file_type()?.is_dir() {
+                std::fs::create_dir_all(to.join(&rel))?;
+                stack.push(rel);
+            } else {
+                std::fs::copy(e.path(), to.join(&rel))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Every URL in the folder's HTML and JavaScript that the page loads is relative: no
+/// `src="/…"`, `href="/…"`, `from '/…'`, `import('/…')` or `fetch('/…')`. (A root-relative
+/// URL would break the page under a sub-path.)
+fn check_relative(dir: &Path) -> Result {
+    let mut problems = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d)? {
+            let path = e?.path();
+            if path.is_dir() {
+                if !path.ends_with("fixtures") {
+                    stack.push(path);
+                }
+                continue;
+            }
+            let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+            if !matches!(ext, "html" | "js" | "mjs" | "css") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path)?;
+            for (n, line) in text.lines().enumerate() {
+                if let Some(bad) = root_relative(line) {
+                    problems.push(format!("{}:{}: {bad}", path.display(), n + 1));
+                }
+            }
+        }
+    }
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "root-relative URLs would break the page under a sub-path:\n  {}",
+            problems.join("\n  ")
+        )
+        .into())
+    }
+}
+
+/// The first root-relative URL a line loads, if any.
+fn root_relative(line: &str) -> Option<&str> {
+    const OPENERS: [&str; 10] = [
+        "src=\"/",
+        "href=\"/",
+        "src='/",
+        "href='/",
+        "from '/",
+        "from \"/",
+        "import('/",
+        "import(\"/",
+        "fetch('/",
+        "fetch(\"/",
+    ];
+    OPENERS.iter().find_map(|o| {
+        let i = line.find(o)?;
+        // `//example.org` (protocol-relative) is not ours either.
+        Some(&line[i..line.len().min(i + o.len() + 30)])
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn root_relative_urls_are_found() {
+        assert_eq!(root_relative("import init from './pkg/x.js';"), None);
+        assert_eq!(root_relative(r#"<link href="style.css">"#), None);
+        assert_eq!(
+            root_relative(r#"<script src="/main.js">"#),
+            Some(r#"src="/main.js">"#)
+        );
+        assert!(root_relative("await fetch('/fixtures/index.json')").is_some());
+        assert!(root_relative("import { x } from '/js/dom.js';").is_some());
+    }
+
+    #[test]
+    fn the_page_loads_nothing_from_the_server_root() {
+        let web = tools::repo_root().join("web");
+        let mut files = vec![
+            web.join("index.html"),
+            web.join("main.js"),
+            web.join("style.css"),
+        ];
+        for e in std::fs::read_dir(web.join("js")).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                files.extend(std::fs::read_dir(p).unwrap().map(|e| e.unwrap().path()));
+            } else {
+                files.push(p);
+            }
+        }
+        assert!(files.len() > 10, "{files:?}");
+        for f in files {
+            let text = std::fs::read_to_string(&f).unwrap();
+            for (n, line) in text.lines().enumerate() {
+                assert_eq!(root_relative(line), None, "{}:{}", f.display(), n + 1);
+            }
+        }
+    }
+}
