@@ -369,7 +369,7 @@ mod tests {
                 y: vec![0],
                 value: vec![1, 1],
                 num: 2,
-                tm: tm
+                tm
             }),
             Err(MapError::UpdateLength { array: "Y", .. })
         ));
@@ -379,7 +379,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 1],
                 num: 2,
-                tm: tm
+                tm
             }),
             Err(MapError::CellOutside { x: 2, .. })
         ));
@@ -389,7 +389,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 2],
                 num: 2,
-                tm: tm
+                tm
             }),
             Err(MapError::BadCellValue { what: "value", .. })
         ));
@@ -400,7 +400,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 1],
                 num: 2,
-                tm: tm
+                tm
             }),
             Ok(2)
         );
