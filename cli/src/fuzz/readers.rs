@@ -3,7 +3,7 @@
 //! `.map` and `.scen`, OpenRTM `.conf` (parsed and applied to real configurations), and
 //! scenario JSON.
 //!
-//! **Allocation bounds** (SPEC §2 Decision 0.2: a reader checks the size it is told before it
+//! **Allocation bounds** (spec §2 Decision 0.2: a reader checks the size it is told before it
 //! allocates): a text reader allocates in proportion to its input —
 //! [`BASE`] + [`PER_BYTE`] × input bytes; a ROS image may decode to more than its file (PNG
 //! is compressed), but never more than the size its header claims once checked against the

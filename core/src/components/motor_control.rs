@@ -420,7 +420,7 @@ impl MotorControl {
                     });
                 }
                 // Both timestamps are valid and ordered, so this is positive; the
-                // difference saturates all the same (SPEC §4 Decision 0.2).
+                // difference saturates all the same (spec §4 Decision 0.2).
                 let dt = tm.nanos_since(prev.tm) as f64 * 1e-9;
                 (
                     [

@@ -120,7 +120,7 @@ impl GridMap {
     }
 
     /// The check every map reader makes on the size a file tells it, before it allocates
-    /// anything for the cells (SPEC §2 Decision 0.2): both dimensions at least 1 and
+    /// anything for the cells (spec §2 Decision 0.2): both dimensions at least 1 and
     /// `width × height` at most [`MAX_CELLS`], computed without overflow. Returns the cell
     /// count.
     pub fn check_size(width: u64, height: u64) -> Result<usize, MapError> {

@@ -59,7 +59,7 @@ fn err(line: Option<usize>, reason: impl Into<String>) -> MapError {
 pub fn load(text: &str) -> Result<GridMap, MapError> {
     let file: MapFile =
         serde_json::from_str(text).map_err(|e| err(Some(e.line()), e.to_string()))?;
-    // The size is checked before anything is allocated for the cells (SPEC §2 Decision
+    // The size is checked before anything is allocated for the cells (spec §2 Decision
     // 0.2): `width × height` within the limit, no overflow.
     let count = GridMap::check_size(file.width, file.height)?;
     let too_big = |axis: &str, v: u64| err(None, format!("{axis} {v} is too large"));

@@ -101,7 +101,7 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
     }
     let width = width.ok_or_else(|| err(MAP, last_line, "missing `width` in the header"))?;
     let height = height.ok_or_else(|| err(MAP, last_line, "missing `height` in the header"))?;
-    // The size is checked before anything is allocated (SPEC §2 Decision 0.2), and the
+    // The size is checked before anything is allocated (spec §2 Decision 0.2), and the
     // cells are gathered as the rows arrive, so the allocation never exceeds what the file
     // holds.
     GridMap::check_size(width as u64, height as u64)?;

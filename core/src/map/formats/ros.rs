@@ -242,7 +242,7 @@ pub fn load_image(
         _ => return Err(image_err("neither a PGM nor a PNG image")),
     };
     let bad = |e: image::ImageError| image_err(format!("cannot decode the {kind} image: {e}"));
-    // The header's size is checked before anything is allocated for the pixels (SPEC §2
+    // The header's size is checked before anything is allocated for the pixels (spec §2
     // Decision 0.2): reading the dimensions reads only the header.
     let (w, h) = reader.into_dimensions().map_err(bad)?;
     let (width, height) = (w as usize, h as usize);
