@@ -121,12 +121,13 @@ fn a_big_update_recomputes_everything_exactly() {
     // More than 1/8 of the columns change: the full-recompute path.
     let mut map = GridMap::new(16, 9, 0.5, (0.0, 0.0), vec![0; 16 * 9]).unwrap();
     let xs: Vec<i32> = (0..16).collect();
+    let ys = [4; 16];
     let vs: Vec<i16> = (0..16).map(|x| i16::from(x % 3 != 0)).collect();
     assert_eq!(
         map.map_update(&MapUpdate {
-            x: xs,
-            y: vec![4; 16],
-            value: vs,
+            x: xs.to_vec(),
+            y: ys.to_vec(),
+            value: vs.to_vec(),
             num: 16,
             tm: Time::default()
         }),

@@ -503,11 +503,11 @@ impl LocalPathPlanning {
             && self
                 .planned_with
                 .is_some_and(|p| p != plan_params(self.config.params()));
-        let pending = (self.flags.replan_request && self.can_replan())
+        let waiting = (self.flags.replan_request && self.can_replan())
             || self.send_global
             || self.send_empty
             || params_changed;
-        !pending
+        !waiting
     }
 
     // ----- internals -----
