@@ -239,9 +239,16 @@ pub fn load_image(
     // The format's own decoder, samples as stored (a PNG's palette, low bit depths and
     // transparency expanded to 8-bit samples, 16-bit ones kept): no conversion of the pixels.
     let image = if kind == "PNG" {
-        decode(PngDecoder::new(Cursor::new(image_bytes)).map_err(bad)?)
+        decode(
+            PngDecoder::new(Cursor::new(image_bytes)).map_err(bad)?,
+            None,
+        )
     } else {
-        decode(PnmDecoder::new(image_bytes).map_err(bad)?)
+        // A PNM image is not compressed: it needs at least one bit a pixel (P4's packing), so
+        // a header that claims more pixels than the file can hold is refused before anything
+        // is allocated for them.
+        let most = 8 * image_bytes.len() as u64;
+        decode(PnmDecoder::new(image_bytes).map_err(bad)?, Some(most))
     };
     let Decoded {
         width,
@@ -327,9 +334,14 @@ struct Decoded {
     samples: Vec<u8>,
 }
 
-/// Decodes the image once its size is known to be a map's (not empty, at most
-/// [`MAX_CELLS`]); the outer error is the size's, the inner one the decoder's.
-fn decode(d: impl ImageDecoder) -> Result<image::ImageResult<Decoded>, MapError> {
+/// Decodes the image once its size, read from its header, is known to be a map's (not
+/// empty, at most [`MAX_CELLS`]: [`GridMap::check_size`], spec §2 Decision 0.2) and, for an
+/// image that is not compressed, at most `most_pixels`; the outer error is the size's, the
+/// inner one the decoder's. Nothing is allocated for the pixels before these checks.
+fn decode(
+    d: impl ImageDecoder,
+    most_pixels: Option<u64>,
+) -> Result<image::ImageResult<Decoded>, MapError> {
     let (w, h) = d.dimensions();
     let (width, height) = (w as usize, h as usize);
     if width == 0 || height == 0 {
@@ -337,14 +349,14 @@ fn decode(d: impl ImageDecoder) -> Result<image::ImageResult<Decoded>, MapError>
             "image of {width}×{height} pixels is empty"
         )));
     }
-    let cells = u64::from(w) * u64::from(h);
-    if cells > MAX_CELLS as u64 {
-        return Err(MapError::TooLarge {
-            width,
-            height,
-            cells,
-            limit: MAX_CELLS,
-        });
+    GridMap::check_size(u64::from(w), u64::from(h))?;
+    if let Some(most) = most_pixels
+        && u64::from(w) * u64::from(h) > most
+    {
+        return Err(image_err(format!(
+            "the PGM/PNM header claims {w}×{h} pixels, but the file has only {} bytes",
+            most / 8
+        )));
     }
     let colour = d.color_type();
     let mut samples = vec![0; d.total_bytes() as usize];
