@@ -75,7 +75,7 @@ proptest! {
             let ys: Vec<i32> = inside.iter().map(|u| i32::from(u.1)).collect();
             let vs: Vec<i16> = inside.iter().map(|u| i16::from(u.2)).collect();
             let tm = Time { sec: n as u32 + 1, nsec: 7 };
-            map.map_update(&MapUpdate { x: xs.to_vec(), y: ys.to_vec(), value: vs.to_vec(), num: xs.len() as i32, tm: tm }).unwrap();
+            map.map_update(&MapUpdate { x: xs.to_vec(), y: ys.to_vec(), value: vs.to_vec(), num: xs.len() as i32, tm }).unwrap();
             prop_assert_eq!(map.version(), tm);
             prop_assert_eq!(map.distances(), &brute(&map)[..]);
             // And equal to a map built afresh from the same cells.
@@ -121,7 +121,7 @@ fn a_big_update_recomputes_everything_exactly() {
     // More than 1/8 of the columns change: the full-recompute path.
     let mut map = GridMap::new(16, 9, 0.5, (0.0, 0.0), vec![0; 16 * 9]).unwrap();
     let xs: Vec<i32> = (0..16).collect();
-    let ys = vec![4; 16];
+    let ys = [4; 16];
     let vs: Vec<i16> = (0..16).map(|x| i16::from(x % 3 != 0)).collect();
     assert_eq!(
         map.map_update(&MapUpdate {
@@ -234,7 +234,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0],
             value: vec![1, 1],
             num: 2,
-            tm: tm,
+            tm,
         }),
         "MapUpdate: Y has 1 entries, but num = 2",
     );
@@ -244,7 +244,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0, 1],
             value: vec![1],
             num: 2,
-            tm: tm,
+            tm,
         }),
         "value has 1 entries, but num = 2",
     );
@@ -254,7 +254,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0],
             value: vec![1],
             num: 2,
-            tm: tm,
+            tm,
         }),
         "X has 1 entries, but num = 2",
     );
@@ -264,7 +264,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![],
             value: vec![],
             num: -1,
-            tm: tm,
+            tm,
         }),
         "num = -1",
     );
@@ -275,7 +275,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0, 0, 0],
             value: vec![1, 1, 1],
             num: 3,
-            tm: tm,
+            tm,
         }),
         "cell (3, 0) is outside the 3×2 map",
     );
@@ -285,7 +285,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0, 0],
             value: vec![1, 1],
             num: 2,
-            tm: tm,
+            tm,
         }),
         "cell (-1, 0) is outside",
     );
@@ -295,7 +295,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0, 2],
             value: vec![1, 1],
             num: 2,
-            tm: tm,
+            tm,
         }),
         "cell (1, 2) is outside",
     );
@@ -305,7 +305,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![0, 0],
             value: vec![1, 2],
             num: 2,
-            tm: tm,
+            tm,
         }),
         "value[1] = 2",
     );
@@ -318,7 +318,7 @@ fn map_update_is_all_or_nothing() {
             y: vec![1],
             value: vec![1],
             num: 1,
-            tm: tm
+            tm
         }),
         Ok(1)
     );

@@ -238,6 +238,14 @@ impl Telemetry {
     }
 }
 
+fn hex(digest: &[u8]) -> String {
+    let mut s = String::with_capacity(2 * digest.len());
+    for b in digest {
+        let _ = write!(s, "{b:02x}");
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -303,12 +311,4 @@ mod tests {
             1 + sample(0).values().len()
         );
     }
-}
-
-fn hex(digest: &[u8]) -> String {
-    let mut s = String::with_capacity(2 * digest.len());
-    for b in digest {
-        let _ = write!(s, "{b:02x}");
-    }
-    s
 }
