@@ -90,7 +90,7 @@ async function boot() {
     app.log.update();
     telemetry.update();
     toolbar.update();
-    legend.update();
+    legend.update(app.stage.robotBox);
     app.notice.update(app.stage.robotBox);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();

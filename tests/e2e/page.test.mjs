@@ -195,8 +195,8 @@ test('(3) real taps on Activate all in Chromium\'s mobile emulation at 390×844,
 
     // Two fingers spread apart on the map: zoom about their middle.
     const box = await page.$eval('#overlay', (e) => { e.scrollIntoView({ block: 'center' }); const r = e.getBoundingClientRect(); return { x: r.left, y: r.top, w: r.width, h: r.height }; });
-    const cx = box.x + box.w / 2;
-    const cy = box.y + box.h / 2;
+    const cx = Math.round(box.x + box.w / 2);
+    const cy = Math.round(box.y + box.h / 2);
     const under = await page.evaluate(([x, y]) => {
       const c = document.getElementById('overlay');
       const r = c.getBoundingClientRect();
@@ -258,6 +258,8 @@ test('(2) the system bar — state, Activate all, Deactivate all, Reset all — 
 
 test('(1) the status and the counters say what is true; the log is in time order with numbers for people', { timeout: 120_000 }, async () => {
   const { page, problems } = await open();
+  const mapBox = () => page.$eval('#canvas-wrap', (e) => JSON.stringify(e.getBoundingClientRect()));
+  const box0 = await mapBox();
   assert.equal(await status(page), 'Plan ready: activate the robot\'s components');
   // A parameter changed while the robot stands: planned again at once, no empty path.
   const before = (await logged(page, 'LocalPlanSent')).length;
@@ -285,6 +287,7 @@ test('(1) the status and the counters say what is true; the log is in time order
   await setParam(page, 'MotorControl', 'PGainL', 5000);
   await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).status_kind === 'off_command', null, WAIT);
   assert.match(await status(page), /^Not following the command: v -?\d+\.\d\d m\/s, ω -?\d+\.\d\d rad\/s \(commanded/);
+  assert.equal(await mapBox(), box0, 'a long status does not move the map');
 
   // The log: times with three decimals, no number with a tail of binary digits, in order.
   await showTab(page, 'log');
@@ -322,7 +325,8 @@ const near = (a, b, tol) => Math.hypot(a[0] - b[0], a[1] - b[1]) < tol;
 test('(4) wheel, buttons and Pan zoom and move the map; Fit; the legend folds; brushes in metres; the hint outside the map', { timeout: 90_000 }, async () => {
   const { page, problems } = await open();
   const box = await page.$eval('#overlay', (e) => { const r = e.getBoundingClientRect(); return { x: r.left, y: r.top, w: r.width, h: r.height }; });
-  const p = [box.x + box.w * 0.3, box.y + box.h * 0.6];
+  // Whole pixels: a mouse event's position is one.
+  const p = [Math.round(box.x + box.w * 0.3), Math.round(box.y + box.h * 0.6)];
   const ppm = () => page.evaluate(() => window.rtnav.demo.pixels_per_metre());
   const ppm0 = await ppm();
   const w0 = await worldAt(page, p);
@@ -370,6 +374,32 @@ test('(4) wheel, buttons and Pan zoom and move the map; Fit; the legend folds; b
   await page.click('#legend summary');
   assert.equal(await legendOpen(), wasOpen);
   assert.match(await page.textContent('#legend-scale'), /\d m$/);
+  // The open legend keeps off the robot: with the robot under it, it takes the other corner.
+  await page.evaluate(() => { document.getElementById('legend').open = true; });
+  await frames(page, 2);
+  await page.evaluate(() => {
+    const { demo, app } = window.rtnav;
+    const t = JSON.parse(demo.telemetry_json());
+    const c = document.getElementById('overlay');
+    const cr = c.getBoundingClientRect();
+    const l = document.getElementById('legend').getBoundingClientRect();
+    const s = c.width / cr.width;
+    const target = [((l.left + l.right) / 2 - cr.left) * s, ((l.top + l.bottom) / 2 - cr.top) * s];
+    const [px, py] = demo.world_to_pixel(t.pose.x, t.pose.y);
+    demo.zoom_at(px, py, 2);
+    const [qx, qy] = demo.world_to_pixel(t.pose.x, t.pose.y);
+    demo.pan_by(target[0] - qx, target[1] - qy);
+    app.emit('view');
+  });
+  await frames(page, 3);
+  const legendClear = await page.evaluate(() => {
+    const l = document.getElementById('legend');
+    const a = l.getBoundingClientRect();
+    const r = window.rtnav.app.stage.robotBox();
+    return { corner: l.dataset.corner, clear: !(a.left < r.right && r.left < a.right && a.top < r.bottom && r.top < a.bottom) };
+  });
+  assert.deepEqual(legendClear, { corner: 'right', clear: true });
+  await page.click('#zoom-fit');
 
   // The hint is outside the map.
   await page.click('#tool-paint');

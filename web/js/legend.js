@@ -57,10 +57,32 @@ export function createLegend(details, body, canvas, app) {
   app.on('layers', showLayers);
   showLayers();
 
+  const overlaps = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+
+  /**
+   * Over the map (a wide screen), the open legend keeps off the robot: it moves to the other
+   * bottom corner when the robot is under it and not under the other one.
+   */
+  function keepOffRobot(robot) {
+    if (getComputedStyle(details).position !== 'absolute') return;
+    const box = robot();
+    if (!box) return;
+    const r = details.getBoundingClientRect();
+    if (!overlaps(r, box)) return;
+    const p = details.offsetParent?.getBoundingClientRect();
+    if (!p) return;
+    const mirrored = { left: p.left + p.right - r.right, right: p.left + p.right - r.left, top: r.top, bottom: r.bottom };
+    if (!overlaps(mirrored, box)) details.dataset.corner = details.dataset.corner === 'right' ? 'left' : 'right';
+  }
+
   return {
-    /** Every frame (cheap): the colour scale and the scale bar when they change. */
-    update() {
+    /**
+     * Every frame (cheap): the colour scale and the scale bar when they change, and the
+     * corner (`robot()` gives the robot's client box; asked only while the legend is open).
+     */
+    update(robot) {
       if (!details.open) return;
+      keepOffRobot(robot);
       const range = demo.heat_range();
       const key = range ? range.join(',') : '';
       if (key !== lastRange) {

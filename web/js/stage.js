@@ -276,9 +276,30 @@ export function createStage(wrap, view, overlay, hint, app) {
   const touches = new Map();
   let pinch = null;
 
+  /** The two fingers' distance and middle (canvas pixels). */
   function pinchState() {
     const [a, b] = [...touches.values()];
     return { d: Math.hypot(b[0] - a[0], b[1] - a[1]), mid: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2] };
+  }
+
+  /**
+   * A pinch holds on to the world point that was between the fingers when it began, and the
+   * zoom and finger distance then: each move scales the zoom by how far the fingers are
+   * apart now, and puts that point between them again.
+   */
+  function startPinch() {
+    const s = pinchState();
+    const w = demo.pixel_to_world(s.mid[0], s.mid[1]);
+    pinch = { d0: s.d, zoom0: demo.zoom(), anchor: w ? [w[0], w[1]] : null };
+  }
+
+  function movePinch() {
+    const s = pinchState();
+    if (!pinch.anchor || !(pinch.d0 > 0) || !(s.d > 0)) return;
+    const want = (pinch.zoom0 * s.d) / pinch.d0;
+    zoomAt(want / demo.zoom(), s.mid);
+    const at = demo.world_to_pixel(pinch.anchor[0], pinch.anchor[1]);
+    if (at) panBy(s.mid[0] - at[0], s.mid[1] - at[1]);
   }
 
   // ------------------------------------------------------------------ the mouse
@@ -297,7 +318,7 @@ export function createStage(wrap, view, overlay, hint, app) {
         // Two fingers: pinch and pan; whatever one finger began is dropped.
         drag = null;
         pending.clear();
-        pinch = pinchState();
+        startPinch();
         drawOverlay();
         return;
       }
@@ -326,11 +347,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     if (e.pointerType === 'touch' && touches.has(e.pointerId)) {
       touches.set(e.pointerId, p);
       if (pinch && touches.size === 2) {
-        // The point between the fingers follows them, then the picture scales about it.
-        const now = pinchState();
-        panBy(now.mid[0] - pinch.mid[0], now.mid[1] - pinch.mid[1]);
-        if (pinch.d > 0 && now.d > 0) zoomAt(now.d / pinch.d, now.mid);
-        pinch = now;
+        movePinch();
         return;
       }
     }

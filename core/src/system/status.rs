@@ -391,7 +391,7 @@ fn component_status(w: &Wiring, kind: ComponentKind) -> String {
             .filter_map(|(on, name)| on.then_some(name))
             .collect();
             format!(
-                "holds: {}; {}{}",
+                "holds: {}; {} made{}",
                 if held.is_empty() {
                     "nothing".to_owned()
                 } else {

@@ -9,7 +9,7 @@ const FIELDS = [
   ['speed', 'v · ω'],
   ['goal', 'To goal'],
   ['driven', 'Driven'],
-  ['plans', 'Plans'],
+  ['plans', 'Plans sent'],
 ];
 
 export function createTelemetry(root, app) {
@@ -41,6 +41,7 @@ export function createTelemetry(root, app) {
       let status = t.status.charAt(0).toUpperCase() + t.status.slice(1);
       if (t.paused) status += ' · paused';
       set('status', status);
+      if (values.get('status').title !== status) values.get('status').title = status;
       values.get('status').dataset.arrived = String(t.arrived);
     },
   };
