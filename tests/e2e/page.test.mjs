@@ -297,6 +297,9 @@ test('(1) the status and the counters say what is true; the log is in time order
     assert.match(time, /^\d+\.\d{3} s$/);
     assert.doesNotMatch(text, /\d\.\d{7,}/, text);
   }
+  // Each change logged once (the core's line; the page adds none of its own).
+  const set = entries.filter(([, text]) => /^MotorControl\.PGainL = 5000$/.test(text));
+  assert.equal(set.length, 1, 'one line for one parameter change');
   const times = entries.map(([t]) => parseFloat(t));
   for (let i = 1; i < times.length; i++) assert.ok(times[i] <= times[i - 1], `newest first: ${times[i - 1]} then ${times[i]}`);
 

@@ -100,9 +100,9 @@ export function createParamsPanel(root, app) {
       row.input.value = show(p?.value);
       app.log.page(`${component}.${name} = ${text} refused: ${r.error}`, 'warn');
     } else {
+      // The core logs the change itself (ParameterSet).
       row.error.hidden = true;
       row.node.classList.remove('refused');
-      app.log.page(`${component}.${name} = ${text}`, 'info');
     }
     dirty = true;
     refresh();
@@ -194,8 +194,8 @@ export function createParamsPanel(root, app) {
         app.log.page(`SetPDGain refused: ${r.error}`, 'warn');
         for (const [n, input] of inputs) input.value = show(held.get(`MotorControl/${n}`)?.value);
       } else {
+        // The core logs the call itself (GainsSet).
         error.hidden = true;
-        app.log.page(`SetPDGain(${pl}, ${pr}, ${dl}, ${dr})`, 'info');
       }
       dirty = true;
       refresh();
