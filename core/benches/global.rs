@@ -1,11 +1,12 @@
-//! A* on the MovingAI benchmark maps (spec §5 "GlobalPathPlanning"), side by side with the
-//! `pathfinding` crate's `astar` on the same grid and rules (8 moves, octile costs, no corner
-//! cutting; its costs are integers, straight 2^32 and diagonal round(√2 · 2^32)).
+//! GlobalPathPlanning's planner (spec §5) on every MovingAI benchmark map in the shared data
+//! (`RTNAV_DATA`, else `../shared/data`; skipped with one line when it is not there), side by
+//! side with the `pathfinding` crate's `astar` on the same grid and rules (8 moves, octile
+//! costs, no corner cutting; `support/baseline.rs`).
 //!
 //! Criterion mode (default): for each map, one iteration solves a *stratified slice* of its
 //! scenarios — every `N`-th problem, starting one further on each iteration, so every bucket
-//! is represented and successive iterations walk through all of them. The time of a whole
-//! map is `N ×` the reported time; the ratio of the two lines is the speed-up.
+//! is represented and successive iterations walk through all of them (`N` grows with the
+//! map's size and problem count). The ratio of the two lines is the speed-up.
 //!
 //! ```text
 //! cargo bench -p rtnav --bench global -- --warm-up-time 1 --measurement-time 3
@@ -17,37 +18,16 @@
 //! The benchmark is external data (`movingai/` of `$RTNAV_DATA`, else `../shared/data`):
 //! without it this says on one line that it is skipped.
 
-use std::hint::black_box;
+#[path = "support/baseline.rs"]
+mod baseline;
+
 use std::io::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use criterion::Criterion;
 use rtnav::global::AStar;
 use rtnav::map::formats::movingai::{self, ScenProblem};
-
-/// (map, slice: every N-th problem per criterion iteration).
-const MAPS: [(&str, usize); 5] = [
-    ("dao/arena", 1),
-    ("dao/den312d", 1),
-    ("mazes/maze512-1-0", 120),
-    ("random/random512-10-0", 16),
-    ("street/Berlin_0_256", 8),
-];
-
-const STRAIGHT: u64 = 1 << 32;
-/// round(√2 · 2^32).
-const DIAGONAL: u64 = 6_074_001_000;
-const MOVES: [(i32, i32); 8] = [
-    (1, 0),
-    (0, 1),
-    (-1, 0),
-    (0, -1),
-    (1, 1),
-    (-1, 1),
-    (-1, -1),
-    (1, -1),
-];
 
 struct Case {
     name: String,
@@ -56,14 +36,44 @@ struct Case {
     problems: Vec<ScenProblem>,
 }
 
+/// Every `.scen` of the MovingAI data with its map, sorted by name.
+fn scen_files(data: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let Ok(sets) = std::fs::read_dir(data.join("movingai")) else {
+        return out;
+    };
+    for set in sets.flatten() {
+        for f in std::fs::read_dir(set.path())
+            .into_iter()
+            .flatten()
+            .flatten()
+        {
+            let p = f.path();
+            if p.extension().is_some_and(|e| e == "scen") {
+                out.push(p);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
 fn load(data: &Path) -> Vec<Case> {
-    MAPS.iter()
-        .map(|&(name, slice)| {
-            let map = movingai::load_map_file(data.join(format!("{name}.map"))).expect("map");
-            let problems =
-                movingai::load_scen_file(data.join(format!("{name}.map.scen"))).expect("scen");
+    scen_files(data)
+        .iter()
+        .map(|scen| {
+            let map = movingai::load_map_file(scen.with_extension("")).expect("map");
+            let problems = movingai::load_scen_file(scen).expect("scen");
+            // About 2·10⁷ cell-problems per iteration: every problem of a small map, a slice
+            // of a large one.
+            let work = problems.len() as f64 * (map.width() * map.height()) as f64;
+            let slice = (work / 2e7).ceil().max(1.0) as usize;
+            let name = scen
+                .file_name()
+                .and_then(|n| n.to_str())
+                .map_or_else(String::new, |n| n.trim_end_matches(".map.scen").to_owned());
             Case {
-                name: name.rsplit('/').next().unwrap_or(name).to_owned(),
+                name,
                 slice,
                 astar: AStar::new(&map, 0.0).expect("planner"),
                 problems,
@@ -82,40 +92,13 @@ fn ours(astar: &mut AStar, p: &ScenProblem) -> f64 {
 
 /// `pathfinding::astar` with the same rules; the path length in cells.
 fn theirs(grid: &AStar, p: &ScenProblem) -> f64 {
-    let (s, t) = (p.start_cell(), p.goal_cell());
-    let goal = (t.0 as i32, t.1 as i32);
-    let free = |x: i32, y: i32| grid.is_passable(i64::from(x), i64::from(y));
-    let (path, cost) = pathfinding::prelude::astar(
-        &(s.0 as i32, s.1 as i32),
-        |&(x, y)| {
-            MOVES.iter().filter_map(move |&(dx, dy)| {
-                let ok = free(x + dx, y + dy)
-                    && (dx == 0 || dy == 0 || (free(x + dx, y) && free(x, y + dy)));
-                ok.then(|| {
-                    let c = if dx != 0 && dy != 0 {
-                        DIAGONAL
-                    } else {
-                        STRAIGHT
-                    };
-                    ((x + dx, y + dy), c)
-                })
-            })
-        },
-        |&(x, y)| {
-            let (dx, dy) = (x.abs_diff(goal.0), y.abs_diff(goal.1));
-            u64::from(dx.abs_diff(dy)) * STRAIGHT + u64::from(dx.min(dy)) * DIAGONAL
-        },
-        |&c| c == goal,
-    )
-    .expect("solvable");
-    black_box(path);
-    cost as f64 / STRAIGHT as f64
+    baseline::pathfinding_astar(grid, p.start_cell(), p.goal_cell())
 }
 
 fn criterion_mode(cases: &mut [Case]) {
     let mut c = Criterion::default().configure_from_args();
     for case in cases.iter_mut() {
-        let mut g = c.benchmark_group(format!("astar/{} (1 in {})", case.name, case.slice));
+        let mut g = c.benchmark_group(format!("movingai/{}", case.name));
         g.sample_size(10);
         let n = case.slice;
         let mut offset = 0;
@@ -190,11 +173,11 @@ fn full_mode(cases: &mut [Case]) {
 fn main() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let data = match rtnav::data::data_dir(&root) {
-        Ok(dir) => dir.join("movingai"),
+        Ok(dir) => dir,
         Err(why) => {
             let _ = writeln!(
                 std::io::stderr(),
-                "SKIPPED the global benchmark (astar/*): {why}"
+                "SKIPPED the global benchmark (movingai/*): {why}"
             );
             return;
         }

@@ -11,10 +11,12 @@
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test                every check CI runs, with a summary
+//! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
 //! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
 //! ```
 
+mod bench;
 mod dist;
 mod fixtures;
 mod fuzz;
@@ -43,6 +45,10 @@ commands:
   serve [--port N]     copy the fixtures and serve web/ without building
   dist [DIR]           build the wasm and write the page, the wasm and the scenarios
                        as a static folder for any static host (default dist/)
+  bench [--no-wasm] [--no-browser]
+                       the performance table of docs/performance.md: criterion benches
+                       with their baselines, the same operations in wasm32 under Node,
+                       and the worst frame painting on a 1.7 M-cell map in Chromium
   test                 cargo test, clippy (native and wasm32), rustfmt, a short fuzz run,
                        a one-hour soak, the wasm tests under Node, the page's build and
                        the browser end-to-end tests (against the dist folder, served under
@@ -121,6 +127,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             }
             return Ok(test::run_all());
         }
+        "bench" => bench::run_all(rest)?,
         "fuzz" => fuzz::fuzz(rest)?,
         "soak" => soak::soak(rest)?,
         "help" | "--help" | "-h" => println!("{USAGE}"),

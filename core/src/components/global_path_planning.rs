@@ -68,7 +68,8 @@ pub struct GlobalPathPlanning {
     instance_name: String,
     config: Configuration<GlobalPathPlanningParams>,
     map: Option<GridMap>,
-    /// The planner for `map` and the last `dmin` used; dropped when the map changes.
+    /// The planner for `map` and the last `dmin` used; dropped when a new map is set, kept
+    /// up to date after `MapUpdate`s.
     planner: Option<AStar>,
     /// The goal held (from the last `SetPosition`).
     goal: Option<Pose>,
@@ -137,7 +138,7 @@ impl GlobalPathPlanning {
         if changed == 0 {
             return Ok(0);
         }
-        self.planner = None;
+        // The planner is kept: it is brought up to date at the next plan (`AStar::sync`).
         if self.goal.is_some() && self.request.is_none() {
             let dmin = self.planned_dmin.unwrap_or(self.config.params().dmin);
             let blocked = self
@@ -208,7 +209,10 @@ impl GlobalPathPlanning {
         let escape = escape_route(map, cells[0], dmin).unwrap_or_else(|| vec![cells[0]]);
         let from = escape.last().copied().unwrap_or(cells[0]);
         let mut planner = match self.planner.take() {
-            Some(p) if p.dmin().to_bits() == dmin.to_bits() => p,
+            Some(mut p) if p.dmin().to_bits() == dmin.to_bits() => {
+                p.sync(map);
+                p
+            }
             _ => AStar::new(map, dmin)?,
         };
         let result = planner.plan(from, cells[1]);

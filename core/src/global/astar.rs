@@ -1,29 +1,44 @@
-//! A* on the 8-connected grid (spec §5 "GlobalPathPlanning"): octile costs, no corner
-//! cutting, optimal, deterministic.
+//! Optimal paths on the 8-connected grid for GlobalPathPlanning (spec §5): octile costs, no
+//! corner cutting, deterministic. A* over *jump points* (Harabor & Grastien, "Online Graph
+//! Pruning for Pathfinding on Grid Maps", AAAI 2011; the rules for grids without corner
+//! cutting as in "Improving Jump Point Search", ICAPS 2014).
 //!
 //! - **Moves**: the eight neighbours; a straight step costs 1, a diagonal √2, and a diagonal
 //!   is allowed only when both orthogonal cells it passes are passable (no corner cutting,
 //!   as the MovingAI benchmark counts).
 //! - **Costs** are exact ([`OctileCost`]): step counts, compared through integer keys that
 //!   order them exactly as the real numbers `a + b·√2`, so no rounding ever decides.
-//! - **Heuristic**: the octile distance, admissible and consistent, so a cell is expanded at
-//!   most once and the goal's cost is optimal when it is taken from the queue.
-//! - **Ties** (spec §6): cells with equal `f = g + h` leave the queue in an order fixed by
-//!   the order they entered it (the last one in first, as far as the radix heap's buckets
-//!   allow); neighbours are visited in a fixed order and a cell's parent changes only on a
-//!   strictly lower cost. The same map, start and goal give the same path everywhere.
-//! - **Speed**: one byte per cell holds everything the inner loop reads about a neighbour
-//!   (passable, search generation, expanded, parent move), with a blocked border so no
-//!   neighbour needs a bounds test; the marks of a search are not cleared but outdated by
-//!   the next generation (cleared only every 7 searches); `g` is recovered from the queue's
-//!   `f` when a cell is expanded; and the open list is a radix heap ([`super::heap`]), which
-//!   suits A*'s never-decreasing `f`: adding is O(1) and taking the minimum cheap.
+//! - **Jump points**: from an expanded cell, each direction the pruning rules keep is
+//!   followed in a straight line until a cell where an optimal path may have to turn (a
+//!   *forced* neighbour: a side cell that opens up where the cell behind it was blocked),
+//!   the goal, or a wall; a diagonal stops where one of its two straight components would.
+//!   Only those cells enter the open list. Every optimal path has a counterpart through
+//!   jump points of equal length, so the result stays optimal (checked against every
+//!   MovingAI problem and against Dijkstra on random maps); the cells between jump points
+//!   are straight runs and are filled in when the path is read back.
+//! - **Heuristic**: the octile distance, admissible and consistent (also along jumps), so a
+//!   cell is expanded at most once and the goal's cost is optimal when it is taken.
+//! - **Ties** (spec §6): equal `f = g + h` leave the queue in an order fixed by the order
+//!   they entered it (the radix heap's), directions are tried in a fixed order, and a
+//!   cell's parent changes only on a strictly lower cost: the same map, start and goal give
+//!   the same path everywhere. Among equally short paths, the jump-point search prefers
+//!   straight runs; [`AStar::plan_cellwise`] (plain A*, every cell a node) is kept for
+//!   comparison and may pick another path of the same length.
+//! - **Speed**: one byte per cell (passable, search generation, expanded, arrival move),
+//!   with a blocked border so no step needs a bounds test, and a transposed copy of the
+//!   passable flags so vertical runs read memory in order; marks are outdated by the next
+//!   generation instead of cleared; `g` is recovered from the queue's `f`; the open list is
+//!   a radix heap ([`super::heap`]). After a `MapUpdate` the planner is brought up to date
+//!   where the map's distances changed ([`AStar::sync`]) instead of being rebuilt.
 
 use super::cost::OctileCost;
 use super::heap::{RadixHeap, RadixKey};
 use crate::errors::GlobalPlanningError;
 use crate::interfaces::GlobalPathCourse;
-use crate::map::{Cell, GridMap};
+use crate::map::{Cell, GridMap, MapStamp};
+
+mod jump;
+use jump::BitLines;
 
 /// The eight moves `(dx, dy)`: east, north, west, south, then the diagonals NE, NW, SW, SE.
 /// Diagonal `4 + k` lies between orthogonals `k` and `(k + 1) % 4`.
@@ -99,10 +114,11 @@ impl Key for u128 {
     }
 }
 
-/// Best costs and the open list, for one key width.
+/// Best costs, parents (jump points) and the open list, for one key width.
 #[derive(Debug, Clone)]
 struct Scratch<K> {
     g: Vec<K>,
+    parent: Vec<u32>,
     open: RadixHeap<K>,
 }
 
@@ -110,6 +126,7 @@ impl<K: RadixKey> Default for Scratch<K> {
     fn default() -> Self {
         Self {
             g: Vec::new(),
+            parent: Vec::new(),
             open: RadixHeap::default(),
         }
     }
@@ -144,6 +161,11 @@ pub struct AStar {
     passable_count: usize,
     /// `(width + 2) × (height + 2)` cell bytes, x fastest, border blocked.
     cells: Vec<u8>,
+    /// The passable cells as bits, row by row and column by column (padded, border
+    /// blocked), for the straight runs of the jumps: 64 cells a word.
+    bits: BitLines,
+    /// The map state `cells` was made from.
+    stamp: MapStamp,
     generation: u8,
     small: Scratch<u64>,
     large: Scratch<u128>,
@@ -156,28 +178,68 @@ impl AStar {
             return Err(GlobalPlanningError::BadDmin { value: dmin });
         }
         let (w, h) = (map.width(), map.height());
-        let stride = w + 2;
-        let mut cells = vec![0u8; stride * (h + 2)];
-        let mut passable_count = 0;
-        for (y, row) in map.distances().chunks_exact(w).enumerate() {
-            let dst = &mut cells[(y + 1) * stride + 1..(y + 1) * stride + 1 + w];
-            for (c, &d) in dst.iter_mut().zip(row) {
-                if !crate::map::within_dmin(d, dmin) {
-                    *c = PASSABLE;
-                    passable_count += 1;
-                }
-            }
-        }
-        Ok(Self {
+        let mut planner = Self {
             width: w,
             height: h,
             dmin,
-            passable_count,
-            cells,
+            passable_count: 0,
+            cells: vec![0u8; (w + 2) * (h + 2)],
+            bits: BitLines::new(w + 2, h + 2),
+            stamp: map.stamp(),
             generation: 0,
             small: Scratch::default(),
             large: Scratch::default(),
-        })
+        };
+        planner.mark(map, 0, 0, w, h);
+        Ok(planner)
+    }
+
+    /// Brings the planner up to date with `map` (the same map after `MapUpdate`s, or
+    /// another of the same size), keeping its scratch space: only the cells whose obstacle
+    /// distance changed since are marked again (the map's change log), or all of them if
+    /// that cannot be told. A map of another size gives a new planner.
+    pub fn sync(&mut self, map: &GridMap) {
+        if map.width() != self.width || map.height() != self.height {
+            if let Ok(fresh) = Self::new(map, self.dmin) {
+                *self = fresh;
+            }
+            return;
+        }
+        let stamp = map.stamp();
+        if stamp == self.stamp {
+            return;
+        }
+        match map.distance_changes_since(self.stamp) {
+            Some(rects) => {
+                for r in rects {
+                    self.mark(map, r.x0, r.y0, r.x1, r.y1);
+                }
+            }
+            None => self.mark(map, 0, 0, self.width, self.height),
+        }
+        self.stamp = stamp;
+    }
+
+    /// Marks the cells `[x0, x1) × [y0, y1)` passable or not from the map's distances
+    /// (clearing their search marks), in both layouts, and keeps the count.
+    fn mark(&mut self, map: &GridMap, x0: usize, y0: usize, x1: usize, y1: usize) {
+        let w = self.width;
+        let stride = w + 2;
+        let dist = map.distances();
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let pass = !crate::map::within_dmin(dist[x + y * w], self.dmin);
+                let p = (x + 1) + (y + 1) * stride;
+                let before = self.cells[p] & PASSABLE != 0;
+                self.cells[p] = if pass { PASSABLE } else { 0 };
+                self.bits.set(x + 1, y + 1, pass);
+                match (before, pass) {
+                    (false, true) => self.passable_count += 1,
+                    (true, false) => self.passable_count -= 1,
+                    _ => {}
+                }
+            }
+        }
     }
 
     /// Cells in x.
@@ -238,22 +300,41 @@ impl AStar {
             && (dx == 0 || dy == 0 || (self.is_passable(bx, ay) && self.is_passable(ax, by)))
     }
 
-    /// The optimal path from `start` to `goal`.
+    /// The optimal path from `start` to `goal`, by jump points.
     ///
     /// Errors: a cell outside the map, a blocked start or goal, or no path.
     pub fn plan(&mut self, start: Cell, goal: Cell) -> Result<GridPlan, GlobalPlanningError> {
-        // Every cost met has at most (passable cells − 1) steps of g plus max(width, height)
-        // steps of h.
-        let bound = self.passable_count + self.width.max(self.height);
-        self.plan_with(start, goal, bound > OctileCost::SMALL_KEY_MAX as usize)
+        let wide = self.wide();
+        self.plan_with(start, goal, wide, true)
     }
 
-    /// [`AStar::plan`] with the `u64` or (`wide`) the `u128` cost key.
+    /// The optimal path from `start` to `goal` by plain A*: every cell a node (the search
+    /// as first written, kept to compare with). The same length as [`AStar::plan`]; where
+    /// several paths are equally short it may pick another.
+    pub fn plan_cellwise(
+        &mut self,
+        start: Cell,
+        goal: Cell,
+    ) -> Result<GridPlan, GlobalPlanningError> {
+        let wide = self.wide();
+        self.plan_with(start, goal, wide, false)
+    }
+
+    /// Whether costs need the `u128` key: every cost met has at most (passable cells − 1)
+    /// steps of g plus max(width, height) steps of h.
+    fn wide(&self) -> bool {
+        let bound = self.passable_count + self.width.max(self.height);
+        bound > OctileCost::SMALL_KEY_MAX as usize
+    }
+
+    /// [`AStar::plan`] (`jump`) or [`AStar::plan_cellwise`] with the `u64` or (`wide`) the
+    /// `u128` cost key.
     fn plan_with(
         &mut self,
         start: Cell,
         goal: Cell,
         wide: bool,
+        jump: bool,
     ) -> Result<GridPlan, GlobalPlanningError> {
         for (which, cell) in [("start", start), ("goal", goal)] {
             if cell.0 >= self.width || cell.1 >= self.height {
@@ -281,26 +362,34 @@ impl AStar {
         self.generation += 1;
         let s = self.padded_index(start);
         let t = self.padded_index(goal);
-        let stride = self.stride();
         let mut search = Search {
             cells: &mut self.cells,
-            stride,
+            bits: &self.bits,
+            stride: self.width + 2,
             generation: self.generation,
             goal,
         };
-        let found = if wide {
-            search.run(s, t, start, &mut self.large)
-        } else {
-            search.run(s, t, start, &mut self.small)
+        let found = match (wide, jump) {
+            (false, true) => search.jump(s, t, start, &mut self.small),
+            (true, true) => search.jump(s, t, start, &mut self.large),
+            (false, false) => search.run(s, t, start, &mut self.small),
+            (true, false) => search.run(s, t, start, &mut self.large),
         };
         let Some(expanded) = found else {
             return Err(GlobalPlanningError::NoPath { start, goal });
         };
-        Ok(self.path(s, t, expanded))
+        let parents = match (jump, wide) {
+            (false, _) => None,
+            (true, false) => Some(&self.small.parent[..]),
+            (true, true) => Some(&self.large.parent[..]),
+        };
+        Ok(self.path(s, t, expanded, parents))
     }
 
-    /// Follows the parent moves back from the goal and counts the steps.
-    fn path(&self, s: usize, t: usize, expanded: usize) -> GridPlan {
+    /// Reads the path back from the goal: along each cell's arrival move, one step at a
+    /// time, to its parent (`parents`: the jump point it was reached from; `None`: the
+    /// neighbour behind it), and counts the steps.
+    fn path(&self, s: usize, t: usize, expanded: usize, parents: Option<&[u32]>) -> GridPlan {
         let stride = self.stride() as isize;
         let mut cells = vec![self.cell_of(t)];
         let mut cost = OctileCost::ZERO;
@@ -308,14 +397,18 @@ impl AStar {
         while p != s {
             let k = usize::from(self.cells[p] & MOVE_MASK);
             let (dx, dy) = MOVES[k];
-            p = p.wrapping_add_signed(-(isize::from(dx) + isize::from(dy) * stride));
-            cells.push(self.cell_of(p));
-            cost = cost
-                + if k < 4 {
-                    OctileCost::STRAIGHT
-                } else {
-                    OctileCost::DIAGONAL
-                };
+            let back = -(isize::from(dx) + isize::from(dy) * stride);
+            let step = if k < 4 {
+                OctileCost::STRAIGHT
+            } else {
+                OctileCost::DIAGONAL
+            };
+            let parent = parents.map_or(p.wrapping_add_signed(back), |ps| ps[p] as usize);
+            while p != parent {
+                p = p.wrapping_add_signed(back);
+                cells.push(self.cell_of(p));
+                cost = cost + step;
+            }
         }
         cells.reverse();
         GridPlan {
@@ -329,6 +422,7 @@ impl AStar {
 /// One search over the cell bytes.
 struct Search<'a> {
     cells: &'a mut [u8],
+    bits: &'a BitLines,
     stride: usize,
     generation: u8,
     goal: Cell,
@@ -447,15 +541,25 @@ mod tests {
         for i in 0..200 {
             let s = ((i * 7) % w, (i * 13) % h);
             let t = ((i * 29 + 5) % w, (i * 3 + 11) % h);
-            let narrow = astar.plan_with(s, t, false);
-            let wide = astar.plan_with(s, t, true);
+            let narrow = astar.plan_with(s, t, false, true);
+            let wide = astar.plan_with(s, t, true, true);
             assert_eq!(narrow, wide, "{s:?} → {t:?}");
+            let (narrow_cells, wide_cells) = (
+                astar.plan_with(s, t, false, false),
+                astar.plan_with(s, t, true, false),
+            );
+            assert_eq!(narrow_cells, wide_cells, "{s:?} → {t:?}");
+            // Jump points or every cell: the same length.
+            assert_eq!(
+                narrow.as_ref().map(|p| p.cost),
+                narrow_cells.as_ref().map(|p| p.cost)
+            );
             solved += usize::from(narrow.is_ok());
         }
         assert!(solved > 50, "{solved}");
         // More searches than generations: the marks were cleared and reused correctly.
         assert_eq!(
-            astar.plan_with((0, 0), (0, 0), false).is_ok(),
+            astar.plan_with((0, 0), (0, 0), false, true).is_ok(),
             map.cells()[0] == 0
         );
     }

@@ -1,6 +1,6 @@
 //! The local path by descent (000 §5.2.4.10, spec §3 step 5).
 
-use super::potential_field::{CellState, NEIGHBOURS, PotentialField};
+use super::potential_field::{CellState, PotentialField};
 use crate::errors::LocalPathError;
 use crate::map::Cell;
 
@@ -13,11 +13,16 @@ use crate::map::Cell;
 /// impassable cell. **Decision (spec §3 step 5)**: "lower" compares the key
 /// `(potential, finalization order)` of [`PotentialField::key`], so equal potentials cannot
 /// stall the descent: every reached cell but the target has a lower neighbour (its parent),
-/// and the keys strictly decrease, so the descent ends at the target. It is in fact the
-/// chain of parents.
+/// and the keys strictly decrease, so the descent ends at the target.
 ///
-/// Errors: [`LocalPathError::NoRoute`] if `from` was not reached (or has no lower
-/// neighbour, which a field made by [`PotentialField::compute`] never gives).
+/// It is the chain of parents, and is computed as such: a cell's parent is finalized before
+/// any other neighbour the step to which is allowed (else that neighbour would have
+/// assigned the cell first), so it has the lowest key among them; and a neighbour not
+/// finalized (the frontier of a stopped field) was queued at or above the parent's
+/// potential, and ranks after every finalized cell. (`tests/local_path_planning_field.rs`
+/// compares it with the search over the neighbours' keys.)
+///
+/// Errors: [`LocalPathError::NoRoute`] if `from` was not reached.
 pub fn descend(field: &PotentialField, from: Cell) -> Result<Vec<Cell>, LocalPathError> {
     let Some(request) = field.request() else {
         return Err(LocalPathError::NoRoute {
@@ -30,45 +35,20 @@ pub fn descend(field: &PotentialField, from: Cell) -> Result<Vec<Cell>, LocalPat
         target,
         current: from,
     };
-    let Some(mut key) = field.key(from) else {
+    if field.state(from) != CellState::Reached {
         return Err(no_route);
-    };
+    }
     let mut path = vec![from];
     let mut cell = from;
     while cell != target {
         if path.len() > field.reached_count() {
             return Err(no_route);
         }
-        let (x, y) = (cell.0 as i64, cell.1 as i64);
-        let mut best: Option<(Cell, (f64, u32))> = None;
-        for &(dx, dy) in &NEIGHBOURS {
-            let (nx, ny) = (x + dx, y + dy);
-            if nx < 0 || ny < 0 {
-                continue;
-            }
-            let n = (nx as usize, ny as usize);
-            let Some(k) = field.key(n) else { continue };
-            if dx != 0
-                && dy != 0
-                && (field.state(((x + dx) as usize, y as usize)) == CellState::Impassable
-                    || field.state((x as usize, (y + dy) as usize)) == CellState::Impassable)
-            {
-                continue;
-            }
-            if less(k, key) && best.is_none_or(|(_, b)| less(k, b)) {
-                best = Some((n, k));
-            }
-        }
-        let Some((n, k)) = best else {
+        let Some(parent) = field.parent(cell) else {
             return Err(no_route);
         };
-        path.push(n);
-        cell = n;
-        key = k;
+        path.push(parent);
+        cell = parent;
     }
     Ok(path)
-}
-
-fn less(a: (f64, u32), b: (f64, u32)) -> bool {
-    a.0 < b.0 || (a.0 == b.0 && a.1 < b.1)
 }

@@ -5,18 +5,21 @@
 //! Architecture invariant: nothing here knows about ports, ticks or flags; every function
 //! takes the map and plain values and returns a value or a [`crate::errors::LocalPathError`].
 
+pub mod angle;
 mod error;
 pub use error::LocalPathError;
 
 mod checks;
 mod control_points;
 mod escape;
+mod field_queue;
 mod local_path;
 mod local_target;
 mod merge;
 mod planner;
 mod potential_field;
 mod radix_queue;
+pub mod reference;
 
 pub use checks::{clear_cell, course_cells};
 pub use control_points::{control_points, corner_cells, thin_collinear};

@@ -20,15 +20,33 @@
 //! `tests/local_path_planning_field.rs`). The heat map then shows the region "below the
 //! robot"; the GUI may ask for the full field.
 //!
-//! Buffers are reused between plans: only the cells touched by the previous plan are reset,
-//! plus one pass over the obstacle distances to mark impassable cells.
+//! **Speed** (the values are those of [`super::reference`], bit for bit; property-tested in
+//! `tests/field_reference.rs`):
+//! - nothing per plan is proportional to the map: the buffers are kept, the cells the last
+//!   plan reached are reset, and the impassable marks (obstacle distance ≤ `dmin`) are kept
+//!   too — redone only where the map's distances changed since (the map's stamp and change
+//!   log, `GridMap::distance_changes_since`), or everywhere for a new map or `dmin`;
+//! - what the expansion of a neighbour reads is one 32-bit word per cell: state, parent and
+//!   the squared obstacle distance in cells², whose repulsion comes from a table (the same
+//!   `1 / (d − dmin)²` of the same metres); a cell's record is `G` and `L`, 16 bytes; the
+//!   attraction and posture parts are computed again when asked for
+//!   ([`PotentialField::info`]) by the same formulas on the same numbers; finalization ranks
+//!   are kept as the order list and indexed on demand;
+//! - a bucket queue (`field_queue.rs`) that carries `L` with `G`, so a finalized cell is
+//!   expanded without reading its record back;
+//! - both posture angles by [`super::angle`]'s `atan2`, `libm::atan2` bit for bit without
+//!   its data-dependent branches.
+
+use std::cell::OnceCell;
+use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use super::radix_queue::RadixQueue;
+use super::angle::atan2_nonneg;
+use super::field_queue::{Entry, FieldQueue};
 use crate::errors::LocalPathError;
 use crate::interfaces::Direction;
-use crate::map::{Cell, GridMap};
+use crate::map::{Cell, GridMap, MapStamp};
 
 /// The potential of the local target (000 §5.2.4.9: "ポテンシャル値(0.1)を設定").
 pub const TARGET_POTENTIAL: f64 = 0.1;
@@ -46,8 +64,24 @@ pub const NEIGHBOURS: [(i64, i64); 8] = [
     (1, -1),
 ];
 
-const NO_PARENT: u8 = u8::MAX;
 const NOT_FINAL: u32 = u32::MAX;
+const UNREACHED: u32 = CellState::Unreached as u32;
+const REACHED: u32 = CellState::Reached as u32;
+const IMPASSABLE: u32 = CellState::Impassable as u32;
+/// A cell's word: its [`CellState`] in bits 0–1, `1 +` the index into [`NEIGHBOURS`] of
+/// the move it was reached by in bits 2–5 (0: none), and its squared obstacle distance in
+/// cells² from bit 6 on (kept with the impassable marks; 0 on impassable cells): what the
+/// expansion of a neighbour reads, in one load.
+const STATE_MASK: u32 = 0b11;
+const PARENT_SHIFT: u32 = 2;
+const PARENT_MASK: u32 = 0b11_1100;
+const D2_SHIFT: u32 = 6;
+/// Squared obstacle distances (cells²) below this have their repulsion in a table.
+const TABLE_D2: u32 = 1 << 14;
+/// In place of a squared distance: the cell's metres are not `map::to_metres` of an
+/// integer below 2²⁶ − 1 (never, for a `GridMap` of at most 2²⁴ cells, whose distances are
+/// below 2²³ cells²); its repulsion is kept aside.
+const RAW_D2: u32 = u32::MAX >> D2_SHIFT;
 
 /// What a cell of the field is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -134,58 +168,131 @@ pub struct CellInfo {
     pub rank: Option<u32>,
 }
 
-/// One cell of the field: the potential, its three parts and the path length.
+/// One cell of the field: the potential `G` and the path length `L` to the target.
+/// Both are 0 on impassable and unreached cells. The parts of `G` follow from the cell,
+/// `L` and the request ([`PotentialField::info`]).
 ///
-/// `#[repr(C)]`, 48 bytes: the five numbers are the first five `f64`s, so a browser can read
-/// e.g. the potentials through one `Float64Array` over [`PotentialField::cells`] with a
-/// stride of 6. Everything is 0 on impassable and unreached cells. Kept together because
-/// the field touches all of them at once: one cache line per cell instead of five.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[repr(C)]
+/// 16 bytes, aligned to 16: four cells to a cache line, none straddling two.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[repr(C, align(16))]
 pub struct FieldCell {
     /// Potential `G`.
     pub potential: f64,
-    /// Repulsion `R = 1 / (d − dmin)²`.
-    pub repulsion: f64,
-    /// Attraction `A = L · (100 − PCL) / 100`.
-    pub attraction: f64,
-    /// Posture `P`.
-    pub posture: f64,
     /// Path length `L` to the target along the parents \[m\].
     pub length: f64,
-    rank: u32,
-    parent: u8,
 }
 
 impl FieldCell {
     const EMPTY: Self = Self {
         potential: 0.0,
-        repulsion: 0.0,
-        attraction: 0.0,
-        posture: 0.0,
         length: 0.0,
-        rank: NOT_FINAL,
-        parent: NO_PARENT,
     };
 }
 
 /// The potential field "PotentialMap[][]" of 000 §5.2.4.9: the map's size, one
 /// [`FieldCell`] and one [`CellState`] per cell (x fastest, as the map).
-#[derive(Debug, Clone, Default)]
+#[derive(Clone, Default)]
 pub struct PotentialField {
     width: usize,
     height: usize,
     grid_size: f64,
     cells: Vec<FieldCell>,
-    state: Vec<u8>,
+    /// Per cell: state, parent and squared obstacle distance (see [`STATE_MASK`]).
+    words: Vec<u32>,
+    /// The state codes alone, made from `words` when first asked for.
+    codes: OnceCell<Vec<u8>>,
+    /// The repulsion of the grid size and `dmin` of `marks` by squared distance below
+    /// [`TABLE_D2`], and of the cells marked [`RAW_D2`].
+    repulsion: Repulsion,
     /// Cells assigned by the last computation, in assignment order (reset on the next).
     touched: Vec<u32>,
+    /// Cells finalized by the last computation, in order: a cell's rank is its index.
+    order: Vec<u32>,
+    /// The ranks per cell, made from `order` when first asked for.
+    ranks: OnceCell<Vec<u32>>,
     /// The Dijkstra queue: potential bits, ties in assignment order.
-    queue: RadixQueue,
+    queue: FieldQueue,
     request: Option<FieldRequest>,
-    finalized: usize,
+    /// What the impassable marks and `d2` were made from: the map's stamp and `dmin`.
+    marks: Option<(MapStamp, u64)>,
     complete: bool,
     current_reached: bool,
+}
+
+impl core::fmt::Debug for PotentialField {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PotentialField")
+            .field("width", &self.width)
+            .field("height", &self.height)
+            .field("grid_size", &self.grid_size)
+            .field("request", &self.request)
+            .field("reached", &self.touched.len())
+            .field("finalized", &self.order.len())
+            .field("complete", &self.complete)
+            .field("current_reached", &self.current_reached)
+            .finish_non_exhaustive()
+    }
+}
+
+/// The constants of one computation, from its request and map.
+#[derive(Debug, Clone, Copy)]
+struct Terms {
+    step_straight: f64,
+    step_diagonal: f64,
+    attraction_factor: f64,
+    posture_factor: f64,
+    posture_on: bool,
+    /// Unit vectors of the motion headings at the current position and at the target.
+    hs: (f64, f64),
+    ht: (f64, f64),
+    current: (i64, i64),
+    target: (i64, i64),
+}
+
+impl Terms {
+    fn new(grid_size: f64, req: &FieldRequest) -> Self {
+        let turn = match req.direction {
+            Direction::Forward => 0.0,
+            Direction::Backward => core::f64::consts::PI,
+        };
+        let posture_factor = req.posture_consideration_level / 100.0;
+        Self {
+            step_straight: grid_size,
+            step_diagonal: f64::sqrt(2.0) * grid_size,
+            attraction_factor: (100.0 - req.posture_consideration_level) / 100.0,
+            posture_factor,
+            posture_on: req.posture && posture_factor > 0.0,
+            hs: (
+                libm::cos(req.current_heading + turn),
+                libm::sin(req.current_heading + turn),
+            ),
+            ht: (
+                libm::cos(req.target_heading + turn),
+                libm::sin(req.target_heading + turn),
+            ),
+            current: (req.current.0 as i64, req.current.1 as i64),
+            target: (req.target.0 as i64, req.target.1 as i64),
+        }
+    }
+
+    /// `P(c)` of a cell at `(x, y)` with path length `l`.
+    #[inline(always)]
+    fn posture(&self, x: i64, y: i64, l: f64) -> f64 {
+        if self.posture_on {
+            self.posture_factor
+                * posture_terms(
+                    x - self.current.0,
+                    y - self.current.1,
+                    self.target.0 - x,
+                    self.target.1 - y,
+                    self.hs,
+                    self.ht,
+                    l,
+                )
+        } else {
+            0.0
+        }
+    }
 }
 
 impl PotentialField {
@@ -203,9 +310,8 @@ impl PotentialField {
     pub fn compute(&mut self, map: &GridMap, request: &FieldRequest) -> Result<(), LocalPathError> {
         validate(map, request)?;
         self.reset(map, request);
-        let w = self.width;
         let target = map.index(request.target);
-        if self.state[target] == CellState::Impassable as u8 {
+        if self.words[target] & STATE_MASK == IMPASSABLE {
             return Err(LocalPathError::TargetBlocked {
                 from: request.target,
             });
@@ -214,7 +320,6 @@ impl PotentialField {
         if self.current_reached {
             Ok(())
         } else {
-            debug_assert!(w > 0);
             Err(LocalPathError::NoRoute {
                 target: request.target,
                 current: request.current,
@@ -222,129 +327,138 @@ impl PotentialField {
         }
     }
 
+    /// Clears what the last computation reached and brings the impassable marks and
+    /// squared distances up to date with `map` and the request's `dmin`.
     fn reset(&mut self, map: &GridMap, request: &FieldRequest) {
         let n = map.width() * map.height();
         if self.width != map.width() || self.height != map.height() || self.cells.len() != n {
             self.width = map.width();
             self.height = map.height();
             self.cells = vec![FieldCell::EMPTY; n];
-            self.state = vec![0; n];
+            self.words = vec![UNREACHED; n];
+            self.marks = None;
         } else {
+            // Reached cells were passable when marked; the marks are redone below where
+            // the distances changed.
             for &i in &self.touched {
                 self.cells[i as usize] = FieldCell::EMPTY;
+                self.words[i as usize] &= !(STATE_MASK | PARENT_MASK);
             }
         }
         self.touched.clear();
+        self.order.clear();
+        self.ranks = OnceCell::new();
+        self.codes = OnceCell::new();
         self.queue.clear();
-        self.grid_size = map.grid_size();
+        let grid = map.grid_size();
+        self.grid_size = grid;
         let dmin = request.dmin;
-        for (s, &d) in self.state.iter_mut().zip(map.distances()) {
-            *s = if crate::map::within_dmin(d, dmin) {
-                CellState::Impassable as u8
-            } else {
-                CellState::Unreached as u8
-            };
+        let key = (map.stamp(), dmin.to_bits());
+        let changes = match self.marks {
+            Some((stamp, bits)) if bits == key.1 => map.distance_changes_since(stamp),
+            _ => None,
+        };
+        let dist = map.distances();
+        let w = self.width;
+        match changes {
+            Some(rects) => {
+                for r in rects {
+                    for y in r.y0..r.y1 {
+                        let from = y * w + r.x0;
+                        let row = from..y * w + r.x1;
+                        self.repulsion
+                            .mark(from, &dist[row.clone()], &mut self.words[row]);
+                    }
+                }
+            }
+            None => {
+                self.repulsion = Repulsion::new(grid, dmin);
+                self.repulsion.mark(0, dist, &mut self.words);
+            }
         }
+        self.marks = Some(key);
         self.request = Some(*request);
-        self.finalized = 0;
         self.complete = false;
         self.current_reached = false;
     }
 
     /// Dijkstra growth from the target (000 §5.2.4.9, spec §3 step 4).
     fn grow(&mut self, map: &GridMap, req: &FieldRequest) {
-        let (w, h) = (self.width as i64, self.height as i64);
-        let g = map.grid_size();
+        let (w, h) = (self.width, self.height);
         let dist = map.distances();
         let dmin = req.dmin;
-        let step_straight = g;
-        let step_diagonal = f64::sqrt(2.0) * g;
-        let attraction_factor = (100.0 - req.posture_consideration_level) / 100.0;
-        let posture_factor = req.posture_consideration_level / 100.0;
-        let posture_on = req.posture && posture_factor > 0.0;
-        let turn = match req.direction {
-            Direction::Forward => 0.0,
-            Direction::Backward => core::f64::consts::PI,
-        };
-        // Unit vectors of the motion headings at the current position and at the target.
-        let hs = (
-            libm::cos(req.current_heading + turn),
-            libm::sin(req.current_heading + turn),
-        );
-        let ht = (
-            libm::cos(req.target_heading + turn),
-            libm::sin(req.target_heading + turn),
-        );
-        let (sx, sy) = (req.current.0 as i64, req.current.1 as i64);
-        let (tx, ty) = (req.target.0 as i64, req.target.1 as i64);
+        let t = Terms::new(map.grid_size(), req);
         let current = map.index(req.current);
         let target = map.index(req.target);
+        let until_current = req.extent == FieldExtent::UntilCurrent;
+        let offsets: [isize; 8] = NEIGHBOURS.map(|(dx, dy)| dx as isize + dy as isize * w as isize);
+        let steps = [t.step_straight, t.step_diagonal];
 
         self.cells[target].potential = TARGET_POTENTIAL;
-        self.state[target] = CellState::Reached as u8;
+        self.words[target] = (self.words[target] & !(STATE_MASK | PARENT_MASK)) | REACHED;
         self.touched.push(target as u32);
-        self.queue.push(TARGET_POTENTIAL.to_bits(), target as u32);
-        let unreached = CellState::Unreached as u8;
-        let impassable = CellState::Impassable as u8;
-        let reached = CellState::Reached as u8;
+        self.queue
+            .push(Entry::new(TARGET_POTENTIAL.to_bits(), 0.0, target as u32));
+        let cells = &mut self.cells[..];
+        let words = &mut self.words[..];
+        let repulsion = &self.repulsion;
+        let touched = &mut self.touched;
+        let order = &mut self.order;
+        let queue = &mut self.queue;
 
-        while let Some((_, i)) = self.queue.pop() {
-            let i = i as usize;
-            self.cells[i].rank = self.finalized as u32;
-            self.finalized += 1;
+        while let Some(entry) = queue.pop() {
+            let (key, lp, cell) = (entry.key, entry.length, entry.cell);
+            let i = cell as usize;
+            order.push(cell);
             if i == current {
                 self.current_reached = true;
-                if req.extent == FieldExtent::UntilCurrent {
+                if until_current {
                     break;
                 }
             }
-            let (px, py) = ((i % self.width) as i64, (i / self.width) as i64);
-            let gp = self.cells[i].potential;
-            let lp = self.cells[i].length;
-            for (k, &(dx, dy)) in NEIGHBOURS.iter().enumerate() {
-                let (nx, ny) = (px + dx, py + dy);
-                if nx < 0 || ny < 0 || nx >= w || ny >= h {
+            let gp = f64::from_bits(key);
+            let (px, py) = ((cell % w as u32) as usize, (cell / w as u32) as usize);
+            let interior = px > 0 && py > 0 && px + 1 < w && py + 1 < h;
+            for k in 0..8 {
+                let (dx, dy) = NEIGHBOURS[k];
+                if !interior {
+                    let (nx, ny) = (px as i64 + dx, py as i64 + dy);
+                    if nx < 0 || ny < 0 || nx >= w as i64 || ny >= h as i64 {
+                        continue;
+                    }
+                }
+                let ni = i.wrapping_add_signed(offsets[k]);
+                let word = words[ni];
+                if word & STATE_MASK != UNREACHED {
                     continue;
                 }
-                let ni = (nx + ny * w) as usize;
-                if self.state[ni] != unreached {
-                    continue;
-                }
-                let diagonal = dx != 0 && dy != 0;
-                if diagonal
-                    && (self.state[(px + dx + py * w) as usize] == impassable
-                        || self.state[(px + (py + dy) * w) as usize] == impassable)
+                let diagonal = k & 1;
+                if diagonal == 1
+                    && (words[i.wrapping_add_signed(dx as isize)] & STATE_MASK == IMPASSABLE
+                        || words[i.wrapping_add_signed(dy as isize * w as isize)] & STATE_MASK
+                            == IMPASSABLE)
                 {
                     // A diagonal step may not cut the corner of an impassable cell.
                     continue;
                 }
-                let l = lp
-                    + if diagonal {
-                        step_diagonal
-                    } else {
-                        step_straight
-                    };
-                let clearance = dist[ni] - dmin;
-                let r = 1.0 / (clearance * clearance);
-                let a = l * attraction_factor;
-                let p = if posture_on {
-                    posture_factor * posture_terms(nx - sx, ny - sy, tx - nx, ty - ny, hs, ht, l)
-                } else {
-                    0.0
+                let l = lp + steps[diagonal];
+                let r = match word >> D2_SHIFT {
+                    RAW_D2 => {
+                        let clearance = dist[ni] - dmin;
+                        1.0 / (clearance * clearance)
+                    }
+                    k2 => repulsion.of(k2),
                 };
+                let a = l * t.attraction_factor;
+                let p = t.posture(px as i64 + dx, py as i64 + dy, l);
                 let gn = gp + r + a + p;
-                self.cells[ni] = FieldCell {
+                cells[ni] = FieldCell {
                     potential: gn,
-                    repulsion: r,
-                    attraction: a,
-                    posture: p,
                     length: l,
-                    rank: NOT_FINAL,
-                    parent: k as u8,
                 };
-                self.state[ni] = reached;
-                self.touched.push(ni as u32);
-                self.queue.push(gn.to_bits(), ni as u32);
+                words[ni] = word | REACHED | ((k as u32 + 1) << PARENT_SHIFT);
+                touched.push(ni as u32);
+                queue.push(Entry::new(gn.to_bits(), l, ni as u32));
             }
         }
         self.complete = self.queue.is_empty();
@@ -370,7 +484,7 @@ impl PotentialField {
         self.request.as_ref()
     }
 
-    /// Every cell's potential, parts and length, x fastest.
+    /// Every cell's potential and length, x fastest.
     pub fn cells(&self) -> &[FieldCell] {
         &self.cells
     }
@@ -381,9 +495,10 @@ impl PotentialField {
     }
 
     /// [`CellState`] per cell as bytes (0 unreached, 1 reached, 2 impassable), for a typed
-    /// view in the browser.
+    /// view in the browser (made on the first call after a computation).
     pub fn state_codes(&self) -> &[u8] {
-        &self.state
+        self.codes
+            .get_or_init(|| self.words.iter().map(|&w| (w & STATE_MASK) as u8).collect())
     }
 
     fn flat(&self, (x, y): Cell) -> Option<usize> {
@@ -393,7 +508,7 @@ impl PotentialField {
     /// The state of a cell (`Unreached` for a cell outside the field).
     pub fn state(&self, cell: Cell) -> CellState {
         self.flat(cell).map_or(CellState::Unreached, |i| {
-            CellState::from_code(self.state[i])
+            CellState::from_code((self.words[i] & STATE_MASK) as u8)
         })
     }
 
@@ -401,17 +516,27 @@ impl PotentialField {
     /// cells not reached).
     pub fn parent(&self, cell: Cell) -> Option<Cell> {
         let i = self.flat(cell)?;
-        let k = *NEIGHBOURS.get(self.cells[i].parent as usize)?;
-        Some((
-            (cell.0 as i64 - k.0) as usize,
-            (cell.1 as i64 - k.1) as usize,
-        ))
+        let k = (((self.words[i] & PARENT_MASK) >> PARENT_SHIFT) as usize).checked_sub(1)?;
+        let (dx, dy) = NEIGHBOURS[k];
+        Some(((cell.0 as i64 - dx) as usize, (cell.1 as i64 - dy) as usize))
+    }
+
+    /// The finalization rank of every cell ([`NOT_FINAL`] if not finalized), made once
+    /// per computation from the order list.
+    fn ranks(&self) -> &[u32] {
+        self.ranks.get_or_init(|| {
+            let mut ranks = vec![NOT_FINAL; self.cells.len()];
+            for (rank, &c) in self.order.iter().enumerate() {
+                ranks[c as usize] = rank as u32;
+            }
+            ranks
+        })
     }
 
     /// A cell's place in the finalization order, if it was finalized.
     pub fn rank(&self, cell: Cell) -> Option<u32> {
         let i = self.flat(cell)?;
-        let rank = self.cells[i].rank;
+        let rank = self.ranks()[i];
         (rank != NOT_FINAL).then_some(rank)
     }
 
@@ -420,23 +545,42 @@ impl PotentialField {
     /// potential. `None` unless reached.
     pub fn key(&self, cell: Cell) -> Option<(f64, u32)> {
         let i = self.flat(cell)?;
-        (self.state[i] == CellState::Reached as u8)
-            .then(|| (self.cells[i].potential, self.cells[i].rank))
+        (self.words[i] & STATE_MASK == REACHED).then(|| (self.cells[i].potential, self.ranks()[i]))
     }
 
-    /// Everything about one cell, for the GUI's inspector; `None` outside the field.
+    /// Everything about one cell, for the GUI's inspector; `None` outside the field. The
+    /// three parts are computed again by the formulas that made the potential, from the
+    /// same numbers (the cell's obstacle distance, its `L`, the request), so they are the
+    /// very values that were added.
     pub fn info(&self, cell: Cell) -> Option<CellInfo> {
         let i = self.flat(cell)?;
         let c = &self.cells[i];
+        let state = CellState::from_code((self.words[i] & STATE_MASK) as u8);
+        let parent = self.parent(cell);
+        let (repulsion, attraction, posture) = match &self.request {
+            Some(req) if state == CellState::Reached && parent.is_some() => {
+                let t = Terms::new(self.grid_size, req);
+                let r = match self.words[i] >> D2_SHIFT {
+                    RAW_D2 => self.repulsion.raw.get(&(i as u32)).copied().unwrap_or(0.0),
+                    k2 => self.repulsion.of(k2),
+                };
+                (
+                    r,
+                    c.length * t.attraction_factor,
+                    t.posture(cell.0 as i64, cell.1 as i64, c.length),
+                )
+            }
+            _ => (0.0, 0.0, 0.0),
+        };
         Some(CellInfo {
             cell,
-            state: CellState::from_code(self.state[i]),
+            state,
             potential: c.potential,
-            repulsion: c.repulsion,
-            attraction: c.attraction,
-            posture: c.posture,
+            repulsion,
+            attraction,
+            posture,
             length: c.length,
-            parent: self.parent(cell),
+            parent,
             rank: self.rank(cell),
         })
     }
@@ -453,7 +597,7 @@ impl PotentialField {
 
     /// Number of finalized cells.
     pub fn finalized_count(&self) -> usize {
-        self.finalized
+        self.order.len()
     }
 
     /// Number of reached cells (finalized plus frontier).
@@ -462,10 +606,77 @@ impl PotentialField {
     }
 }
 
+/// The repulsion `R = 1 / (d − dmin)²` by squared obstacle distance, for one grid size
+/// and `dmin`; and the impassable marks and squared distances of cells.
+#[derive(Debug, Clone, Default)]
+struct Repulsion {
+    grid: f64,
+    dmin: f64,
+    /// By squared distance below [`TABLE_D2`].
+    table: Vec<f64>,
+    /// The cells marked [`RAW_D2`] (never, for a `GridMap`'s distances).
+    raw: BTreeMap<u32, f64>,
+}
+
+impl Repulsion {
+    fn new(grid: f64, dmin: f64) -> Self {
+        Self {
+            grid,
+            dmin,
+            table: (0..TABLE_D2)
+                .map(|k2| Self::formula(k2, grid, dmin))
+                .collect(),
+            raw: BTreeMap::new(),
+        }
+    }
+
+    /// `R` of a passable cell at `√k2 · g` metres: the metres as the map makes them
+    /// (`map::to_metres`), then the seed's formula.
+    #[inline(always)]
+    fn formula(k2: u32, grid: f64, dmin: f64) -> f64 {
+        let clearance = crate::map::to_metres(u64::from(k2), grid) - dmin;
+        1.0 / (clearance * clearance)
+    }
+
+    #[inline(always)]
+    fn of(&self, k2: u32) -> f64 {
+        match self.table.get(k2 as usize) {
+            Some(&r) => r,
+            None => Self::formula(k2, self.grid, self.dmin),
+        }
+    }
+
+    /// Marks the cells `from..` with obstacle distances `dist`: impassable, or unreached
+    /// with their squared distance.
+    fn mark(&mut self, from: usize, dist: &[f64], words: &mut [u32]) {
+        for (i, (&d, word)) in dist.iter().zip(words).enumerate() {
+            if crate::map::within_dmin(d, self.dmin) {
+                *word = IMPASSABLE;
+                continue;
+            }
+            // Metres are √d² · g (`map::to_metres`); d² comes back exactly from them (the
+            // relative error of (d/g)² is below 7·2⁻⁵³, d² < 2⁴⁹), and is used only if it
+            // gives the very same metres.
+            let q = d / self.grid;
+            let r = (q * q).round();
+            let k2 = if r < f64::from(RAW_D2) && crate::map::to_metres(r as u64, self.grid) == d {
+                r as u32
+            } else {
+                let clearance = d - self.dmin;
+                self.raw
+                    .insert((from + i) as u32, 1.0 / (clearance * clearance));
+                RAW_D2
+            };
+            *word = (k2 << D2_SHIFT) | UNREACHED;
+        }
+    }
+}
+
 /// `G_Angle · G_Distance + S_Angle · S_Distance` of spec §3 step 4, from integer cell
 /// offsets `v` = current → c and `w` = c → target, unit motion headings `hs`, `ht`, and the
 /// path length `l` \[m\]. 0 where `SL` or `GL` is 0. Angles are in [0, π], computed as
 /// `atan2(|v × h|, v · h)`, which needs no wrapping.
+#[inline(always)]
 fn posture_terms(
     vx: i64,
     vy: i64,
@@ -484,8 +695,8 @@ fn posture_terms(
     // G_Distance = SL / GL, S_Distance = (GL / SL) · L: only the ratio of the straight
     // distances is needed, so cells serve as the unit.
     let sl_over_gl = f64::sqrt(sl2 / gl2);
-    let s_angle = libm::atan2((vx * hs.1 - vy * hs.0).abs(), vx * hs.0 + vy * hs.1);
-    let g_angle = libm::atan2((wx * ht.1 - wy * ht.0).abs(), wx * ht.0 + wy * ht.1);
+    let s_angle = atan2_nonneg((vx * hs.1 - vy * hs.0).abs(), vx * hs.0 + vy * hs.1);
+    let g_angle = atan2_nonneg((wx * ht.1 - wy * ht.0).abs(), wx * ht.0 + wy * ht.1);
     g_angle * sl_over_gl + s_angle * l / sl_over_gl
 }
 

@@ -39,16 +39,6 @@ fn bucket(key: u64, last: u64) -> usize {
 }
 
 impl RadixQueue {
-    /// Empties the queue, keeping its memory; the next key may be anything.
-    pub(crate) fn clear(&mut self) {
-        for b in &mut self.buckets {
-            b.clear();
-        }
-        self.head = 0;
-        self.last = 0;
-        self.len = 0;
-    }
-
     pub(crate) fn is_empty(&self) -> bool {
         self.len == 0
     }

@@ -27,6 +27,8 @@
 //! for exactly the rows where some `g` changed. (`g` is kept from the first `MapUpdate` on; a
 //! new map streams it through its distance array instead, see [`DistanceField::new`].)
 
+use super::grid_map::CellRect;
+
 /// The obstacle distances of a map, and what is needed to keep them current.
 ///
 /// Invariants: `distance` is the full transform of the current cells in metres; `column`,
@@ -196,7 +198,7 @@ fn floor_div(n: i64, d: i64) -> i64 {
 const METRE_TABLE_LEN: usize = 4096;
 
 /// `√d² · grid_size`: the one formula for metres (spec §6: `sqrt` through `libm`).
-fn to_metres(d2: u64, grid_size: f64) -> f64 {
+pub(crate) fn to_metres(d2: u64, grid_size: f64) -> f64 {
     f64::sqrt(d2 as f64) * grid_size
 }
 
@@ -319,17 +321,28 @@ impl DistanceField {
     }
 
     /// The whole transform again, in place, keeping the column phase for later updates.
-    fn recompute(&mut self, cells: &[u8], width: usize, height: usize) {
+    /// Returns the rectangle of the cells whose distance changed, if any did.
+    fn recompute(&mut self, cells: &[u8], width: usize, height: usize) -> Option<CellRect> {
         let column = self.column.get_or_insert_with(Vec::new);
         column.resize(cells.len(), 0);
         column_phase(cells, width, height, column);
         let mut scratch = RowScratch::new(width);
-        for (g, out) in column
+        let mut row = vec![0.0; width];
+        let mut changed = Changed::default();
+        for (y, (g, out)) in column
             .chunks_exact(width)
             .zip(self.distance.chunks_exact_mut(width))
+            .enumerate()
         {
-            transform_row(&mut scratch, &self.metres, g, out);
+            transform_row(&mut scratch, &self.metres, g, &mut row);
+            for (x, (o, &n)) in out.iter_mut().zip(&row).enumerate() {
+                if o.to_bits() != n.to_bits() {
+                    *o = n;
+                    changed.add(x, y);
+                }
+            }
         }
+        changed.rect()
     }
 
     /// Obstacle distances in metres, x fastest.
@@ -339,45 +352,184 @@ impl DistanceField {
 
     /// Brings the field up to date after the cells at flat indices `changed` (any order,
     /// duplicates allowed) changed in `cells`. Exact: the result equals
-    /// [`DistanceField::new`] on the new cells.
+    /// [`DistanceField::new`] on the new cells. Returns the rectangle of the cells whose
+    /// distance changed (`None`: none did).
+    ///
+    /// Bounded to what can change: `g` is recomputed for the changed columns only, and in a
+    /// row where `g` changed, only the cells that the change can reach are recomputed (by
+    /// the exact bounded scan of [`row_scan`], from the row's `g`). A cell `x` can change
+    /// only if some changed column `c` has `(x − c)² + min(g_old(c), g_new(c))² ≤ D_old(x)`
+    /// (`D` the squared distance in cells): a new nearer obstacle must beat the old
+    /// distance, and a lost one must have been the nearest. With `dx` the distance from `x`
+    /// to the span of changed columns and `m` the smallest such `min(g_old, g_new)²` of the
+    /// row, `dx² + m ≤ D_old(x)` is therefore necessary. The scan outward from the span stops
+    /// at the first `x` with `dx² > D_old(x)`: `√D_old` grows by at most 1 per cell (a
+    /// distance is 1-Lipschitz) while `dx` grows by exactly 1, so no cell farther out can
+    /// pass either. `D_old(x)` is read back from the metres exactly (`(d/g)²` rounds to the
+    /// integer: its relative error is below 7·2⁻⁵³ and `D < 2⁴⁹`), plus one for margin.
     pub(crate) fn update_cells(
         &mut self,
         cells: &[u8],
         width: usize,
         height: usize,
         changed: &[usize],
-    ) {
+    ) -> Option<CellRect> {
         let mut columns: Vec<usize> = changed.iter().map(|&i| i % width).collect();
         columns.sort_unstable();
         columns.dedup();
-        // Many columns (the row-major full recompute is cheaper than strided columns), or no
-        // column phase kept yet (the first update: it is made now and kept).
+        if columns.len() * 8 > width {
+            // Many columns: the row-major full recompute is cheaper than strided columns.
+            return self.recompute(cells, width, height);
+        }
         let column = match &mut self.column {
-            Some(column) if columns.len() * 8 <= width => column,
-            _ => {
-                self.recompute(cells, width, height);
-                return;
+            Some(column) => column,
+            None => {
+                // The first update: the column phase is made now (one vectorised pass) and
+                // kept, then updated like any other.
+                let mut column = vec![0u32; cells.len()];
+                // The column phase of the old cells: the changed cells flipped back.
+                let mut old = Vec::with_capacity(changed.len());
+                for &i in changed {
+                    old.push((i, cells[i]));
+                }
+                let mut before = cells.to_vec();
+                for &(i, v) in &old {
+                    before[i] = 1 - v;
+                }
+                column_phase(&before, width, height, &mut column);
+                self.column.insert(column)
             }
         };
-        let mut dirty = vec![false; height];
+        // Per row: the span of changed columns and the smallest min(g_old, g_new)².
+        let mut rows: Vec<(u32, u32, u64)> = vec![(u32::MAX, 0, u64::MAX); height];
+        let mut dirty: Vec<usize> = Vec::new();
         let mut col = vec![0u32; height];
         for &x in &columns {
             column_phase_one(cells, width, x, &mut col);
             for (y, &g) in col.iter().enumerate() {
                 let old = &mut column[x + y * width];
                 if *old != g {
+                    let low = u64::from((*old).min(g));
                     *old = g;
-                    dirty[y] = true;
+                    let r = &mut rows[y];
+                    if r.0 == u32::MAX {
+                        dirty.push(y);
+                    }
+                    r.0 = r.0.min(x as u32);
+                    r.1 = r.1.max(x as u32);
+                    r.2 = r.2.min(low * low);
                 }
             }
         }
-        let mut scratch = RowScratch::new(width);
-        for y in (0..height).filter(|&y| dirty[y]) {
-            let r = y * width..(y + 1) * width;
-            let out = &mut self.distance[r.clone()];
-            transform_row(&mut scratch, &self.metres, &column[r], out);
+        let grid = self.metres.grid_size;
+        let mut changed_rect = Changed::default();
+        let mut scratch: Option<RowScratch> = None;
+        let mut fresh = Vec::new();
+        for &y in &dirty {
+            let (x0, x1, m) = rows[y];
+            let (x0, x1) = (x0 as usize, x1 as usize);
+            let g = &column[y * width..(y + 1) * width];
+            let out = &mut self.distance[y * width..(y + 1) * width];
+            let old_d2 = |d: f64| -> u64 {
+                let q = d / grid;
+                (q * q).round() as u64 + 1
+            };
+            // The cells to recompute, found by the outward scans.
+            fresh.clear();
+            for (x, &d) in out.iter().enumerate().take(x1 + 1).skip(x0) {
+                if m <= old_d2(d) {
+                    fresh.push(x);
+                }
+            }
+            for x in (0..x0).rev() {
+                let dx = (x0 - x) as u64;
+                let d2 = old_d2(out[x]);
+                if dx * dx > d2 {
+                    break;
+                }
+                if dx * dx + m <= d2 {
+                    fresh.push(x);
+                }
+            }
+            for (x, &d) in out.iter().enumerate().skip(x1 + 1) {
+                let dx = (x - x1) as u64;
+                let d2 = old_d2(d);
+                if dx * dx > d2 {
+                    break;
+                }
+                if dx * dx + m <= d2 {
+                    fresh.push(x);
+                }
+            }
+            if fresh.len() * 8 > width {
+                // Most of the row: the whole row by the cheaper exact method.
+                let scratch = scratch.get_or_insert_with(|| RowScratch::new(width));
+                let mut row = vec![0.0; width];
+                transform_row(scratch, &self.metres, g, &mut row);
+                for (x, (o, &n)) in out.iter_mut().zip(&row).enumerate() {
+                    if o.to_bits() != n.to_bits() {
+                        *o = n;
+                        changed_rect.add(x, y);
+                    }
+                }
+                continue;
+            }
+            for &x in &fresh {
+                let n = self.metres.get(scan_one(g, x));
+                if out[x].to_bits() != n.to_bits() {
+                    out[x] = n;
+                    changed_rect.add(x, y);
+                }
+            }
+        }
+        changed_rect.rect()
+    }
+}
+
+/// The bounding rectangle of the cells whose distance changed.
+#[derive(Debug, Default)]
+struct Changed(Option<CellRect>);
+
+impl Changed {
+    #[inline]
+    fn add(&mut self, x: usize, y: usize) {
+        match &mut self.0 {
+            None => {
+                self.0 = Some(CellRect {
+                    x0: x,
+                    y0: y,
+                    x1: x + 1,
+                    y1: y + 1,
+                })
+            }
+            Some(r) => {
+                r.x0 = r.x0.min(x);
+                r.y0 = r.y0.min(y);
+                r.x1 = r.x1.max(x + 1);
+                r.y1 = r.y1.max(y + 1);
+            }
         }
     }
+
+    fn rect(self) -> Option<CellRect> {
+        self.0
+    }
+}
+
+/// The squared distance of cell `x` of a row from its column phase `g`: [`row_scan`] for
+/// one cell.
+#[inline]
+fn scan_one(g: &[u32], x: usize) -> u64 {
+    let mut best = u64::from(g[x]) * u64::from(g[x]);
+    let mut k = 1usize;
+    while ((k * k) as u64) < best {
+        let left = if k <= x { u64::from(g[x - k]) } else { 0 };
+        let right = g.get(x + k).map_or(0, |&v| u64::from(v));
+        let side = left.min(right);
+        best = best.min((k * k) as u64 + side * side);
+        k += 1;
+    }
+    best
 }
 
 /// Squared distance, in cells², from every cell's centre to the nearest obstacle cell's

@@ -1,6 +1,9 @@
 //! `GridMap`: the occupancy grid of `SetMap` (000 §3.2.2.1 (4), §5.2.4.1), its world frame,
 //! atomic `MapUpdate` (§3.2.2.1 (5), §5.2.4.6) and obstacle distances (spec §2).
 
+use std::collections::VecDeque;
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use super::distance::DistanceField;
 use super::{MapError, MapUpdate};
 use crate::rtc::Time;
@@ -26,10 +29,40 @@ pub fn within_dmin(distance: f64, dmin: f64) -> bool {
 /// lower-left cell.
 pub type Cell = (usize, usize);
 
+/// The cells `[x0, x1) × [y0, y1)` of a map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct CellRect {
+    pub x0: usize,
+    pub y0: usize,
+    pub x1: usize,
+    pub y1: usize,
+}
+
+/// Which map, and which state of its obstacle distances: what a planner's cache of values
+/// derived from the distances (passable cells) was made from. Not part of a map's value
+/// (two equal maps have different stamps); it never changes a result, only whether a cache
+/// is reused (spec §6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct MapStamp {
+    id: u64,
+    revision: u64,
+}
+
+/// Every `GridMap` value — made, read or cloned — gets its own id, so a cache keyed by a
+/// stamp is never applied to another map.
+static NEXT_MAP_ID: AtomicU64 = AtomicU64::new(1);
+
+fn fresh_id() -> u64 {
+    NEXT_MAP_ID.fetch_add(1, Ordering::Relaxed)
+}
+
+/// How many distance changes a map remembers for [`GridMap::distance_changes_since`].
+const CHANGES_KEPT: usize = 64;
+
 /// An occupancy grid. A `GridMap` that exists is valid (spec §2 Decision): dimensions ≥ 1,
 /// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
 /// 0 (free) or 1 (obstacle).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug)]
 pub struct GridMap {
     width: usize,
     height: usize,
@@ -40,6 +73,43 @@ pub struct GridMap {
     /// Obstacle distances (metres, 0 on obstacle cells), kept current by every change.
     field: DistanceField,
     version: Time,
+    /// This value's id (see [`MapStamp`]).
+    id: u64,
+    /// Counts the `MapUpdate`s that changed a distance.
+    revision: u64,
+    /// The last [`CHANGES_KEPT`] revisions: where the distances changed.
+    changes: VecDeque<(u64, CellRect)>,
+}
+
+impl Clone for GridMap {
+    /// A copy with its own id: its distances may change apart from the original's.
+    fn clone(&self) -> Self {
+        Self {
+            width: self.width,
+            height: self.height,
+            grid_size: self.grid_size,
+            origin: self.origin,
+            cells: self.cells.clone(),
+            field: self.field.clone(),
+            version: self.version,
+            id: fresh_id(),
+            revision: self.revision,
+            changes: self.changes.clone(),
+        }
+    }
+}
+
+impl PartialEq for GridMap {
+    /// Equal cells, geometry, distances and version (the stamp is not part of the value).
+    fn eq(&self, other: &Self) -> bool {
+        self.width == other.width
+            && self.height == other.height
+            && self.grid_size == other.grid_size
+            && self.origin == other.origin
+            && self.version == other.version
+            && self.cells == other.cells
+            && self.field == other.field
+    }
 }
 
 impl GridMap {
@@ -85,6 +155,9 @@ impl GridMap {
             cells,
             field,
             version: Time::default(),
+            id: fresh_id(),
+            revision: 0,
+            changes: VecDeque::new(),
         })
     }
 
@@ -210,6 +283,36 @@ impl GridMap {
         self.field.distances()
     }
 
+    /// The current [`MapStamp`].
+    pub(crate) fn stamp(&self) -> MapStamp {
+        MapStamp {
+            id: self.id,
+            revision: self.revision,
+        }
+    }
+
+    /// Where the obstacle distances changed since `since` (a stamp of this map): one
+    /// rectangle per change, oldest first. `None` when that cannot be told — another map's
+    /// stamp, or changes too old to be remembered — and everything must be taken as changed.
+    pub(crate) fn distance_changes_since(
+        &self,
+        since: MapStamp,
+    ) -> Option<impl Iterator<Item = CellRect> + '_> {
+        if since.id != self.id || since.revision > self.revision {
+            return None;
+        }
+        let missing = self.revision - since.revision;
+        if missing as usize > self.changes.len() {
+            return None;
+        }
+        Some(
+            self.changes
+                .iter()
+                .filter(move |(r, _)| *r > since.revision)
+                .map(|&(_, rect)| rect),
+        )
+    }
+
     /// Flat index of an in-map cell, `x + y · width` (meaningless, but no panic, for a cell
     /// outside the map).
     pub fn index(&self, (x, y): Cell) -> usize {
@@ -298,9 +401,16 @@ impl GridMap {
             .map(|&(idx, _)| idx)
             .collect();
         self.version = tm;
-        if !changed.is_empty() {
-            self.field
-                .update_cells(&self.cells, self.width, self.height, &changed);
+        if !changed.is_empty()
+            && let Some(rect) =
+                self.field
+                    .update_cells(&self.cells, self.width, self.height, &changed)
+        {
+            self.revision += 1;
+            if self.changes.len() == CHANGES_KEPT {
+                self.changes.pop_front();
+            }
+            self.changes.push_back((self.revision, rect));
         }
         Ok(changed.len())
     }
@@ -369,7 +479,7 @@ mod tests {
                 y: vec![0],
                 value: vec![1, 1],
                 num: 2,
-                tm
+                tm,
             }),
             Err(MapError::UpdateLength { array: "Y", .. })
         ));
@@ -379,7 +489,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 1],
                 num: 2,
-                tm
+                tm,
             }),
             Err(MapError::CellOutside { x: 2, .. })
         ));
@@ -389,7 +499,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 2],
                 num: 2,
-                tm
+                tm,
             }),
             Err(MapError::BadCellValue { what: "value", .. })
         ));
@@ -400,7 +510,7 @@ mod tests {
                 y: vec![0, 0],
                 value: vec![1, 1],
                 num: 2,
-                tm
+                tm,
             }),
             Ok(2)
         );
