@@ -6,7 +6,12 @@
 //! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
 //! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
+//! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
+//! rtnav soak --hours 24 --scenario fixtures/scenarios/willow_garage.json
 //! ```
+//!
+//! `fuzz` and `soak` are the reliability tools of issue 18 (`rtnav_cli::fuzz`,
+//! `rtnav_cli::soak`); `cargo xtask fuzz` and `cargo xtask soak` run them in release mode.
 //!
 //! `inspect` prints what the map and the potential field say about one cell, as one line of
 //! JSON (`rtnav::system::CellInspection`), for the scenario loaded as the browser page loads
@@ -30,6 +35,11 @@ use rtnav::system::{
     BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
     System, setup,
 };
+use rtnav_cli::{alloc, fuzz, soak};
+
+// Counts allocations: the fuzzer's allocation bounds and the soak's memory figures.
+#[global_allocator]
+static ALLOCATOR: alloc::Counting = alloc::Counting;
 
 #[derive(Debug, Parser)]
 #[command(
@@ -94,6 +104,46 @@ enum Command {
         #[arg(long)]
         root: Option<PathBuf>,
     },
+    /// Fuzz the readers and the hostile calls: mutated fixture inputs and generated ones,
+    /// each checked for panics, time (1 s), allocation bounds and refused calls that change
+    /// something. Prints, per target, the inputs tried, the failures and the slowest input.
+    Fuzz {
+        /// Wall time in all, shared evenly by the targets run [s].
+        #[arg(long, default_value_t = 60.0)]
+        seconds: f64,
+        /// Exactly this many inputs per target instead of a time budget.
+        #[arg(long)]
+        cases: Option<u64>,
+        /// The seed (default: from the clock; printed, to replay a run).
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Only the targets whose name contains this (repeatable).
+        #[arg(long)]
+        target: Vec<String>,
+        /// Replay one input (with --seed and --target).
+        #[arg(long)]
+        case: Option<u64>,
+        /// The project's root (fixtures).
+        #[arg(long)]
+        root: Option<PathBuf>,
+    },
+    /// Drive a scenario for hours of simulated time with random reachable goals and random
+    /// map edits; report goals, arrivals, bumps, errors, planning failures, stuck periods and
+    /// memory. Exits 1 on a bump, a component error, a stuck period or growing memory.
+    Soak {
+        /// Simulated hours.
+        #[arg(long, default_value_t = 1.0)]
+        hours: f64,
+        /// The scenario (default: fixtures/scenarios/open_field.json).
+        #[arg(long)]
+        scenario: Option<PathBuf>,
+        /// The seed of the goals and edits.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// The project's root.
+        #[arg(long)]
+        root: Option<PathBuf>,
+    },
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -143,6 +193,20 @@ fn main() -> ExitCode {
             cell,
             root,
         } => inspect(&scenario, cell, root),
+        Command::Fuzz {
+            seconds,
+            cases,
+            seed,
+            target,
+            case,
+            root,
+        } => run_fuzz(seconds, cases, seed, target, case, root),
+        Command::Soak {
+            hours,
+            scenario,
+            seed,
+            root,
+        } => run_soak(hours, scenario, seed, root),
     };
     match result {
         Ok(code) => code,
@@ -339,4 +403,156 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
     Ok(ExitCode::SUCCESS)
+}
+
+fn run_fuzz(
+    seconds: f64,
+    cases: Option<u64>,
+    seed: Option<u64>,
+    only: Vec<String>,
+    replay: Option<u64>,
+    root: Option<PathBuf>,
+) -> CliResult<ExitCode> {
+    if !(seconds.is_finite() && seconds >= 0.0) {
+        return Err(format!("--seconds {seconds}: must be a number ≥ 0"));
+    }
+    if replay.is_some() && (seed.is_none() || only.is_empty()) {
+        return Err("--case replays one input: give --seed and --target too".to_owned());
+    }
+    let root = root.unwrap_or_else(rtnav_cli::project_root);
+    let data_dir = rtnav::data::data_dir(&root).ok();
+    let seed = seed.unwrap_or_else(|| {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(18, |d| d.as_secs())
+    });
+    let targets = fuzz::all_targets(&root, data_dir.as_deref());
+    let names: Vec<&str> = targets.iter().map(|t| t.name()).collect();
+    let chosen = names
+        .iter()
+        .filter(|n| fuzz::chosen(n, &only, &names))
+        .count()
+        .max(1);
+    let per_target = Duration::from_secs_f64(seconds / chosen as f64);
+    println!(
+        "fuzz: seed {seed}, {chosen} targets, {} each (shared data: {})",
+        match cases {
+            Some(n) => format!("{n} inputs"),
+            None => format!("{:.1} s", per_target.as_secs_f64()),
+        },
+        data_dir
+            .as_ref()
+            .map_or("absent: its inputs are skipped".to_owned(), |d| d
+                .display()
+                .to_string())
+    );
+    let options = fuzz::Options {
+        seed,
+        per_target,
+        cases,
+        only,
+        replay,
+    };
+    let reports = fuzz::run_targets(targets, &options, |r| println!("{}", r.line()));
+    let tried: u64 = reports.iter().map(|r| r.tried).sum();
+    let failed: u64 = reports.iter().map(|r| r.failed).sum();
+    let failures: Vec<(&str, &fuzz::Failure)> = reports
+        .iter()
+        .flat_map(|r| r.failures.iter().map(move |f| (r.name.as_str(), f)))
+        .collect();
+    for (target, f) in &failures {
+        println!(
+            "\nFAILED {target} case {} ({}): {}\n  input: {}\n  replay: rtnav fuzz --seed {seed} --target {target} --case {}",
+            f.case, f.kind, f.message, f.input, f.case
+        );
+    }
+    if !alloc::installed() {
+        println!("(allocation bounds not checked: the counting allocator is not installed)");
+    }
+    println!("fuzz: {tried} inputs, {failed} failures (seed {seed})");
+    Ok(if failed == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+fn run_soak(
+    hours: f64,
+    scenario: Option<PathBuf>,
+    seed: u64,
+    root: Option<PathBuf>,
+) -> CliResult<ExitCode> {
+    if !(hours.is_finite() && hours > 0.0) {
+        return Err(format!("--hours {hours}: must be a positive number"));
+    }
+    let root = root.unwrap_or_else(rtnav_cli::project_root);
+    let path = scenario.unwrap_or_else(|| root.join("fixtures/scenarios/open_field.json"));
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
+    let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
+    let resolver = RepoResolver::new(&root);
+    let needs_data = scenario
+        .map_files(&resolver)
+        .map(|files| {
+            files
+                .iter()
+                .any(|f| rtnav::data::data_relative(f).is_some())
+        })
+        .unwrap_or_else(|_| format!("{:?}", scenario.map).contains(rtnav::data::DATA_PREFIX));
+    if needs_data && let Err(missing) = resolver.data() {
+        println!("soak: {} SKIPPED: {missing}", scenario.name);
+        return Ok(ExitCode::SUCCESS);
+    }
+    // The scenario's set-up (its own parameters included), without its timed events: the
+    // soak makes its own goals and edits.
+    let system = setup::build(
+        &scenario,
+        &resolver,
+        &Setup::of(&scenario),
+        BuildOptions::default(),
+    )
+    .map_err(|e| e.to_string())?;
+    let mut options = soak::SoakOptions::new(hours, seed);
+    if let Some(d) = scenario
+        .config
+        .get("LocalPathPlanning")
+        .and_then(|c| c.get("dmin"))
+    {
+        options.dmin = *d;
+    }
+    println!(
+        "soak: {}, {hours} simulated hours, seed {seed}, dmin {} m",
+        scenario.name, options.dmin
+    );
+    let soak = soak::Soak::new(system, Some(scenario.goal.pose()), options);
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        soak.run(|h, r| {
+            println!(
+                "  {h:6.2} h: {} goals, {} arrivals, {} bumps, {} errors, {} stuck, heap {:.1} MiB",
+                r.goals,
+                r.arrivals,
+                r.bumps,
+                r.component_errors,
+                r.stuck.len(),
+                alloc::total_live() as f64 / 1048576.0
+            );
+        })
+    }));
+    let report = match outcome {
+        Ok(r) => r,
+        Err(_) => {
+            println!("verdict           FAILED: a panic");
+            return Ok(ExitCode::from(1));
+        }
+    };
+    print!("{}", report.text());
+    let problems = report.problems();
+    if problems.is_empty() {
+        println!("verdict           passed");
+        Ok(ExitCode::SUCCESS)
+    } else {
+        println!("verdict           FAILED: {}", problems.join(", "));
+        Ok(ExitCode::from(1))
+    }
 }

@@ -12,7 +12,7 @@ pub use crate::map::MapError;
 pub use crate::motion::MotionError;
 #[cfg(feature = "render")]
 pub use crate::render::RenderError;
-pub use crate::rtc::{ConfigError, LifecycleError};
+pub use crate::rtc::{ConfigError, LifecycleError, TimestampError};
 pub use crate::system::{ConfBundleError, ScenarioError, SessionError, SystemError};
 
 /// Any error `rtnav` returns.
@@ -25,6 +25,10 @@ pub enum Error {
     /// A configuration parameter or `.conf` file problem (spec §1).
     #[error(transparent)]
     Config(#[from] ConfigError),
+    /// A timestamp refused where a sample entered a component (spec §4 Decision 0.2:
+    /// `nsec` ≥ 10⁹), by [`Time::checked`](crate::rtc::Time::checked).
+    #[error(transparent)]
+    Timestamp(#[from] TimestampError),
     /// A map that cannot be built, loaded or updated (spec §2).
     #[error(transparent)]
     Map(#[from] MapError),

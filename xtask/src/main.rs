@@ -12,12 +12,16 @@
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test                every check CI runs, with a summary
 //! cargo xtask bench               the performance table (docs/performance.md)
+//! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
+//! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
 //! ```
 
 mod bench;
 mod dist;
 mod fixtures;
+mod fuzz;
 mod serve;
+mod soak;
 mod test;
 mod tools;
 mod wasm;
@@ -41,13 +45,22 @@ commands:
   serve [--port N]     copy the fixtures and serve web/ without building
   dist [DIR]           build the wasm and write the page, the wasm and the scenarios
                        as a static folder for any static host (default dist/)
-  test                 cargo test, clippy (native and wasm32), rustfmt, the wasm tests
-                       under Node, the page's build and the browser end-to-end tests
-                       (against the dist folder, served under a sub-path)
   bench [--no-wasm] [--no-browser]
                        the performance table of docs/performance.md: criterion benches
                        with their baselines, the same operations in wasm32 under Node,
                        and the worst frame painting on a 1.7 M-cell map in Chromium
+  test                 cargo test, clippy (native and wasm32), rustfmt, a short fuzz run,
+                       a one-hour soak, the wasm tests under Node, the page's build and
+                       the browser end-to-end tests (against the dist folder, served under
+                       a sub-path)
+  fuzz [--seconds N] [--seed S] [--target NAME]...
+                       fuzz the readers and the hostile calls in release mode for N s in
+                       all (default 300); prints per target the inputs tried, the failures
+                       (with the command that replays each) and the slowest input
+  soak [--hours H] [--scenario FILE] [--seed S]
+                       drive open_field and the Willow Garage ROS map (or FILE) for H
+                       simulated hours (default 24) with random goals and map edits; fails
+                       on a bump, an error, a stuck period or growing memory
   help                 this text
 
 External data (the real maps of some tests and scenarios) is read from $RTNAV_DATA, else
@@ -115,6 +128,8 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             return Ok(test::run_all());
         }
         "bench" => bench::run_all(rest)?,
+        "fuzz" => fuzz::fuzz(rest)?,
+        "soak" => soak::soak(rest)?,
         "help" | "--help" | "-h" => println!("{USAGE}"),
         other => return Err(format!("unknown command `{other}`\n\n{USAGE}").into()),
     }

@@ -37,6 +37,10 @@ const STAGES: &[Stage] = &[
         run: fmt_check,
     },
     Stage {
+        name: "soak (1 simulated hour, open_field)",
+        run: crate::soak::test_stage,
+    },
+    Stage {
         name: "wasm tests under Node",
         run: wasm_tests,
     },

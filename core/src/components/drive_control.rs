@@ -8,8 +8,10 @@
 //! when the planner says so ([`crate::motion::PurePursuit`] has the details). Run it at 50 Hz
 //! (spec §6).
 //!
-//! Without a pose, with a non-finite pose, or with no new pose for 0.5 s it sends zero
-//! velocity and reports why.
+//! Without a pose, with a non-finite pose or one whose timestamp has `nsec` ≥ 10⁹ (refused by
+//! [`crate::rtc::Time::checked`], spec §4 Decision 0.2), or with no new pose for 0.5 s it
+//! sends zero velocity and reports why. Control points with such a timestamp are refused
+//! (the held path stays) and reported.
 //!
 //! **Clearance check (spec §5, Decision)**: the planners keep `dmin` between cell centres,
 //! and on a fine map that can leave the body (`radiusOfBodyArea`, told by the system)
@@ -355,6 +357,24 @@ impl DriveControl {
     }
 }
 
+/// An `InCurrentPosition` sample checked: a valid timestamp ([`crate::rtc::Time::checked`],
+/// spec §4 Decision 0.2) and finite numbers.
+fn check_position(msg: &TimedPosition) -> Result<Pose, MotionError> {
+    const PORT: &str = "InCurrentPosition";
+    msg.tm.checked(PORT)?;
+    match [("x", msg.x), ("y", msg.y), ("theta", msg.theta)]
+        .into_iter()
+        .find(|(_, v)| !v.is_finite())
+    {
+        Some((field, value)) => Err(MotionError::NonFinite {
+            port: PORT,
+            field: field.to_owned(),
+            value,
+        }),
+        None => Ok(Pose::new(msg.x, msg.y, msg.theta)),
+    }
+}
+
 impl Component for DriveControl {
     fn instance_name(&self) -> &str {
         &self.name
@@ -394,7 +414,13 @@ impl Component for DriveControl {
         if self.in_control_points.is_new()
             && let Some(cp) = self.in_control_points.read()
         {
-            match self.pursuit.set_path(&cp) {
+            // A sample with a bad timestamp is refused whole (the held path stays).
+            let accepted = cp
+                .tm
+                .checked("InControlPoints")
+                .map_err(MotionError::from)
+                .and_then(|_| self.pursuit.set_path(&cp));
+            match accepted {
                 // A new path: the clearance check starts afresh.
                 Ok(()) => self.blocked = None,
                 Err(e) => self.last_error = Some(e),
@@ -403,21 +429,12 @@ impl Component for DriveControl {
         if self.in_current_position.is_new()
             && let Some(msg) = self.in_current_position.read()
         {
-            let pose = Pose::new(msg.x, msg.y, msg.theta);
-            match [("x", msg.x), ("y", msg.y), ("theta", msg.theta)]
-                .into_iter()
-                .find(|(_, v)| !v.is_finite())
-            {
-                Some((field, value)) => {
-                    let e = MotionError::NonFinite {
-                        port: "InCurrentPosition",
-                        field: field.to_owned(),
-                        value,
-                    };
+            match check_position(&msg) {
+                Err(e) => {
                     self.last_error = Some(e.clone());
                     self.pose_fault = Some(e);
                 }
-                None => {
+                Ok(pose) => {
                     self.pose = Some((pose, now));
                     self.pose_fault = None;
                 }

@@ -315,7 +315,9 @@ impl Component for GlobalPathPlanning {
             && let Some(p) = self.in_current_position.read()
         {
             let pose = Pose::new(p.x, p.y, p.theta);
-            if pose.is_finite() {
+            // A sample whose timestamp is not valid is ignored like a pose that is not
+            // finite (spec §4 Decision 0.2, the one check `Time::checked`).
+            if pose.is_finite() && p.tm.checked("InCurrentPosition").is_ok() {
                 self.current = Some(pose);
             }
         }

@@ -12,8 +12,9 @@
 //! **Decision (faults, issue 7)**: a non-finite number on either input is a fault — the pose
 //! can no longer be trusted, and publishing it would send NaN on to the planners and
 //! DriveControl — so `on_execute` fails with the port and field named, and the component goes
-//! to Error (spec §1); the held pose stays and Reset recovers. A wrong length or time not
-//! advancing is ignored and reported ([`Localization::last_error`]); the held pose stays.
+//! to Error (spec §1); the held pose stays and Reset recovers. A wrong length, a timestamp
+//! whose `nsec` is not below 10⁹ ([`crate::rtc::Time::checked`], spec §4 Decision 0.2) or
+//! time not advancing is ignored and reported ([`Localization::last_error`]); the held pose stays.
 
 use crate::define_parameters;
 use crate::errors::MotionError;
@@ -161,6 +162,7 @@ impl Localization {
 
     fn read_simulated(&mut self, msg: &TimedDoubleSeq) -> Result<(), MotionError> {
         const PORT: &str = "InSimulatedPosition";
+        msg.tm.checked(PORT)?;
         if msg.data.len() != 4 {
             return Err(MotionError::WrongLength {
                 port: PORT,
@@ -191,6 +193,7 @@ impl Localization {
 
     fn read_wheels(&mut self, msg: &TimedDoubleSeq) -> Result<(), MotionError> {
         const PORT: &str = "InCurrentWheelAngle";
+        let tm = msg.tm.checked(PORT)?;
         let (l, r) = self.wheel_ids;
         let need = l.max(r) + 1;
         if msg.data.len() < need {
@@ -201,7 +204,7 @@ impl Localization {
             });
         }
         self.odometry
-            .update(msg.tm, [msg.data[l], msg.data[r]], PORT)
+            .update(tm, [msg.data[l], msg.data[r]], PORT)
             .map(|_| ())
     }
 }

@@ -6,7 +6,8 @@
 //! and angles), compute the PD torques, convert the simulated pose, send everything, keep
 //! the current values as the previous ones.
 //!
-//! **Safe stop** (spec §4 Decision): a non-finite or wrong-length input, time going
+//! **Safe stop** (spec §4 Decision): a non-finite or wrong-length input, a timestamp whose
+//! `nsec` is not below 10⁹ (refused by [`Time::checked`], spec §4 Decision 0.2), time going
 //! backwards (wheel angles must advance, Δt > 0; a target velocity may repeat its timestamp
 //! but not go back), or no new target velocity (or wheel angles) for 0.5 s gives zero torque
 //! and a reason ([`MotorControl::status`], [`MotorControl::last_error`]). The component keeps
@@ -384,6 +385,7 @@ impl MotorControl {
     /// `JOINT_VALUE` carries every joint of the model and the ids pick the wheels.
     fn accept_wheel_angles(&mut self, msg: &TimedDoubleSeq, now: u64) -> Result<(), MotionError> {
         const PORT: &str = "InCurrentWheelAngle";
+        let tm = msg.tm.checked(PORT)?;
         let g = self.geometry;
         if msg.data.len() < g.joints() {
             return Err(MotionError::WrongLength {
@@ -410,14 +412,16 @@ impl MotorControl {
         let (rate, dt) = match self.wheels {
             None => ([0.0; 2], 0.0),
             Some(prev) => {
-                if msg.tm <= prev.tm {
+                if tm <= prev.tm {
                     return Err(MotionError::TimeWentBackwards {
                         port: PORT,
                         previous_s: prev.tm.as_secs_f64(),
-                        now_s: msg.tm.as_secs_f64(),
+                        now_s: tm.as_secs_f64(),
                     });
                 }
-                let dt = (msg.tm.as_nanos() - prev.tm.as_nanos()) as f64 * 1e-9;
+                // Both timestamps are valid and ordered, so this is positive; the
+                // difference saturates all the same (spec §4 Decision 0.2).
+                let dt = tm.nanos_since(prev.tm) as f64 * 1e-9;
                 (
                     [
                         (angle[0] - prev.angle[0]) / dt,
@@ -428,7 +432,7 @@ impl MotorControl {
             }
         };
         self.wheels = Some(Wheels {
-            tm: msg.tm,
+            tm,
             angle,
             rate,
             dt,
@@ -441,6 +445,7 @@ impl MotorControl {
     /// drive cannot move sideways, spec §4).
     fn accept_target_velocity(&mut self, msg: &TimedVelocity, now: u64) -> Result<(), MotionError> {
         const PORT: &str = "TargetVelocity";
+        let tm = msg.tm.checked(PORT)?;
         for (field, v) in [("vx", msg.vx), ("w", msg.w)] {
             if !v.is_finite() {
                 return Err(MotionError::NonFinite {
@@ -451,16 +456,16 @@ impl MotorControl {
             }
         }
         if let Some(prev) = self.target
-            && msg.tm < prev.tm
+            && tm < prev.tm
         {
             return Err(MotionError::TimeWentBackwards {
                 port: PORT,
                 previous_s: prev.tm.as_secs_f64(),
-                now_s: msg.tm.as_secs_f64(),
+                now_s: tm.as_secs_f64(),
             });
         }
         self.target = Some(Target {
-            tm: msg.tm,
+            tm,
             v: msg.vx,
             w: msg.w,
             arrived_ns: now,
@@ -470,13 +475,14 @@ impl MotorControl {
 
     /// 002 §5.2.5.6: the simulated pose, converted to the axle centre.
     fn convert_simulated_position(&mut self, msg: &TimedDoubleSeq) -> Result<(), MotionError> {
+        let tm = msg.tm.checked("InSimulatedPosition")?;
         let (pose, z) = self
             .geometry
             .frame
             .axle_pose(&msg.data, "InSimulatedPosition")?;
         self.simulated_pose = Some((pose, z));
         let out = TimedDoubleSeq {
-            tm: msg.tm,
+            tm,
             data: vec![pose.x, pose.y, z, pose.theta],
         };
         self.out_simulated_position_to_invent_gui.write(out.clone());

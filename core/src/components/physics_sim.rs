@@ -168,7 +168,8 @@ impl PhysicsSim {
         self.physics.set_map(map);
     }
 
-    /// `MapUpdate` on the held map (atomic; spec §2).
+    /// `MapUpdate` on the held map (atomic; spec §2). A timestamp whose `nsec` is not below
+    /// 10⁹ is refused ([`MapUpdate::check`], spec §4 Decision 0.2) and nothing changes.
     pub fn map_update(&mut self, update: &MapUpdate) -> crate::Result<usize> {
         self.physics.map_update(update)
     }
@@ -218,7 +219,9 @@ impl PhysicsSim {
         let Some(msg) = self.torque.read() else {
             return;
         };
-        let checked = if msg.data.len() != 2 {
+        let checked = if let Err(e) = msg.tm.checked("torque") {
+            Err(MotionError::from(e))
+        } else if msg.data.len() != 2 {
             Err(MotionError::WrongLength {
                 port: "torque",
                 len: msg.data.len(),

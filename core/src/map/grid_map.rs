@@ -192,6 +192,35 @@ impl GridMap {
         Self::new(w, h, grid_size, (0.0, 0.0), cells)
     }
 
+    /// The check every map reader makes on the size a file tells it, before it allocates
+    /// anything for the cells (spec §2 Decision 0.2): both dimensions at least 1 and
+    /// `width × height` at most [`MAX_CELLS`], computed without overflow. Returns the cell
+    /// count.
+    pub fn check_size(width: u64, height: u64) -> Result<usize, MapError> {
+        let signed = |n: u64| i64::try_from(n).unwrap_or(i64::MAX);
+        if width < 1 {
+            return Err(MapError::BadDimension {
+                axis: "MapLengthX",
+                value: signed(width),
+            });
+        }
+        if height < 1 {
+            return Err(MapError::BadDimension {
+                axis: "MapLengthY",
+                value: signed(height),
+            });
+        }
+        match width.checked_mul(height) {
+            Some(cells) if cells <= MAX_CELLS as u64 => Ok(cells as usize),
+            cells => Err(MapError::TooLarge {
+                width: usize::try_from(width).unwrap_or(usize::MAX),
+                height: usize::try_from(height).unwrap_or(usize::MAX),
+                cells: cells.unwrap_or(u64::MAX),
+                limit: MAX_CELLS,
+            }),
+        }
+    }
+
     fn check_shape(width: i64, height: i64) -> Result<(), MapError> {
         if width < 1 {
             return Err(MapError::BadDimension {

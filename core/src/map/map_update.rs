@@ -55,12 +55,13 @@ impl MapUpdate {
     /// entries, every cell is inside the map, every value is 0 or 1, and the timestamp's
     /// `nsec` is below 10⁹ (spec §4 Decision 0.2). Nothing is changed.
     pub fn check(&self, map: &GridMap) -> Result<(), MapError> {
-        if self.tm.nsec >= 1_000_000_000 {
-            return Err(MapError::BadTimestamp {
-                what: "MapUpdate",
-                nsec: self.tm.nsec,
-            });
-        }
+        // The one timestamp check (spec §4 Decision 0.2), as every component makes it.
+        self.tm
+            .checked("MapUpdate")
+            .map_err(|e| MapError::BadTimestamp {
+                what: e.what,
+                nsec: e.nsec,
+            })?;
         for (array, len) in [
             ("X", self.x.len()),
             ("Y", self.y.len()),

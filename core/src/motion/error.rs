@@ -26,6 +26,10 @@ pub enum MotionError {
         /// What is needed, e.g. `2`, `at least 2`, `12`.
         expected: String,
     },
+    /// A timestamp with `nsec` ≥ 10⁹ on a port or service (spec §4 Decision 0.2), refused
+    /// by [`Time::checked`](crate::rtc::Time::checked).
+    #[error(transparent)]
+    BadTimestamp(#[from] crate::rtc::TimestampError),
     /// A timestamp not later than the previous one on the same port.
     #[error("{port}: time went backwards (or stood still): {now_s} s after {previous_s} s")]
     TimeWentBackwards {

@@ -73,6 +73,14 @@ impl Polyline {
             s += libm::hypot(w[1].0 - w[0].0, w[1].1 - w[0].1);
             cumulative.push(s);
         }
+        if !s.is_finite() {
+            // Finite points so far apart that the length overflows (issue 18).
+            return Err(MotionError::NonFinite {
+                port: "InControlPoints",
+                field: "length".to_owned(),
+                value: s,
+            });
+        }
         Ok(Self {
             points: kept,
             cumulative,
@@ -379,7 +387,8 @@ impl PurePursuit {
     }
 
     /// One control step of `dt` seconds from the robot's `pose`: the velocity command, with
-    /// every limit applied. A non-finite pose is refused (and the command is unchanged).
+    /// every limit applied. A non-finite pose is refused, and so is a command that would not
+    /// be finite (a path of huge coordinates); either way the last command is unchanged.
     pub fn update(
         &mut self,
         pose: Pose,
@@ -520,6 +529,19 @@ impl PurePursuit {
         let v_eff = ramp(v_last, v_eff, dv);
         let w_des = w_des.clamp(-params.max_angular_velocity, params.max_angular_velocity);
         let w = ramp(self.last.1, w_des, dw);
+        // A path of huge finite coordinates can still make the geometry overflow (∞ − ∞):
+        // such a command is refused and never kept, so the rate limits stay finite (issue 18:
+        // a NaN kept here made the next tick's `clamp` panic).
+        if let Some((field, value)) = [("v", v_eff), ("w", w)]
+            .into_iter()
+            .find(|(_, x)| !x.is_finite())
+        {
+            return Err(MotionError::NonFinite {
+                port: "TargetVelocity",
+                field: format!("{field} (from the control points and the pose)"),
+                value,
+            });
+        }
         self.last = (sign * v_eff, w);
         Ok(PursuitCommand {
             v: self.last.0,

@@ -118,3 +118,19 @@ pub enum ConfigError {
 fn at_line(line: Option<usize>) -> String {
     line.map(|l| format!(" (line {l})")).unwrap_or_default()
 }
+
+/// A timestamp whose `nsec` is not below 10⁹ (spec §4 Decision 0.2): refused where the
+/// sample enters, by [`Time::checked`](super::Time::checked).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "{what}: timestamp {{sec: {sec}, nsec: {nsec}}} is not valid: nsec must be below 1000000000"
+)]
+pub struct TimestampError {
+    /// Where the sample entered: the port or service (seed names, e.g. `TargetVelocity`,
+    /// `MapUpdate`).
+    pub what: &'static str,
+    /// The seconds given.
+    pub sec: u32,
+    /// The nanoseconds given (≥ 10⁹).
+    pub nsec: u32,
+}

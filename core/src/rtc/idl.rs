@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::TimestampError;
+
 const NANOS_PER_SEC: u64 = 1_000_000_000;
 
 /// `RTC::Time`: seconds and nanoseconds.
@@ -16,6 +18,34 @@ pub struct Time {
 }
 
 impl Time {
+    /// The one check of a timestamp where a sample enters a component (a data port, a
+    /// service call; spec §4 Decision 0.2): `nsec` must be below 10⁹. Returns the time
+    /// unchanged, or an error naming `what` (the port or service) and the value. Every
+    /// component uses this, so all refuse the same timestamps the same way.
+    pub fn checked(self, what: &'static str) -> Result<Self, TimestampError> {
+        if self.is_valid() {
+            Ok(self)
+        } else {
+            Err(TimestampError {
+                what,
+                sec: self.sec,
+                nsec: self.nsec,
+            })
+        }
+    }
+
+    /// Whether `nsec` is below 10⁹ (see [`Time::checked`]).
+    pub fn is_valid(self) -> bool {
+        u64::from(self.nsec) < NANOS_PER_SEC
+    }
+
+    /// Nanoseconds from `earlier` to `self`, 0 if `earlier` is not before `self`: a time
+    /// difference that never underflows (spec §4 Decision 0.2). Exact for any two times,
+    /// valid or not ([`Time::as_nanos`] cannot overflow a `u64`).
+    pub fn nanos_since(self, earlier: Self) -> u64 {
+        self.as_nanos().saturating_sub(earlier.as_nanos())
+    }
+
     /// The time `ns` nanoseconds after zero (saturating at `u32::MAX` seconds).
     pub fn from_nanos(ns: u64) -> Self {
         let sec = (ns / NANOS_PER_SEC).min(u64::from(u32::MAX));
@@ -25,7 +55,8 @@ impl Time {
         }
     }
 
-    /// Total nanoseconds.
+    /// Total nanoseconds (exact: at most `u32::MAX · 10⁹ + u32::MAX` < 2⁶⁴, even for an
+    /// invalid `nsec`).
     pub fn as_nanos(self) -> u64 {
         u64::from(self.sec) * NANOS_PER_SEC + u64::from(self.nsec)
     }

@@ -2,7 +2,7 @@
 //! data ports, IDL types and configuration.
 
 mod error;
-pub use error::{ConfigError, LifecycleError};
+pub use error::{ConfigError, LifecycleError, TimestampError};
 
 mod component;
 mod conf_file;

@@ -103,7 +103,7 @@ pub use scenario::{
 };
 pub use session::{
     ComponentParameters, MAX_PLOT_SECONDS, MAX_SPEED, MAX_STEP_MS, MIN_SPEED, ParameterView,
-    PlotWindow, Session, TUNABLE,
+    PlotWindow, Session, TOKEN_INFLATE_LIMIT, TUNABLE,
 };
 pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
 pub use status::{ComponentInfo, STILL, Status, SystemState};

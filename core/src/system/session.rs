@@ -192,6 +192,9 @@ fn parameters_of(system: &System) -> Parameters {
     out
 }
 
+/// The most a share token may inflate to \[bytes\] (16 MiB; a set-up is a few KiB).
+pub const TOKEN_INFLATE_LIMIT: usize = 1 << 24;
+
 fn bad_token(reason: impl Into<String>) -> crate::Error {
     SessionError::BadShareToken {
         reason: reason.into(),
@@ -360,8 +363,17 @@ impl Session {
         let bytes = URL_SAFE_NO_PAD
             .decode(token.trim())
             .map_err(|e| bad_token(format!("not base64url: {e}")))?;
-        let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, 1 << 24)
-            .map_err(|e| bad_token(format!("not deflated data: {e:?}")))?;
+        // The error names the inflate status only: its partial output (up to the limit)
+        // would make a message of megabytes (issue 18, a deflate bomb).
+        let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, TOKEN_INFLATE_LIMIT)
+            .map_err(|e| {
+                bad_token(match e.status {
+                    miniz_oxide::inflate::TINFLStatus::HasMoreOutput => {
+                        format!("it inflates to more than {TOKEN_INFLATE_LIMIT} bytes")
+                    }
+                    status => format!("not deflated data ({status:?})"),
+                })
+            })?;
         let setup: Setup =
             serde_json::from_slice(&json).map_err(|e| bad_token(format!("bad set-up: {e}")))?;
         if setup.v != SETUP_VERSION {

@@ -503,10 +503,11 @@ impl LocalPathPlanning {
             && self
                 .planned_with
                 .is_some_and(|p| p != plan_params(self.config.params()));
-        !((self.flags.replan_request && self.can_replan())
+        let waiting = (self.flags.replan_request && self.can_replan())
             || self.send_global
             || self.send_empty
-            || params_changed)
+            || params_changed;
+        !waiting
     }
 
     // ----- internals -----
@@ -538,7 +539,9 @@ impl LocalPathPlanning {
     /// spec §3 step 1 (000 §5.2.4.4).
     fn update_current(&mut self, p: &TimedPosition, params: &LocalPathPlanningParams) {
         let pose = Pose::new(p.x, p.y, p.theta);
-        if !pose.is_finite() {
+        // A pose that is not finite, or whose timestamp is not valid (spec §4 Decision 0.2,
+        // the one check `Time::checked`), cannot be trusted: no current position.
+        if !pose.is_finite() || p.tm.checked("InCurrentPosition").is_err() {
             self.flags.current_position = false;
             return;
         }
@@ -745,6 +748,7 @@ impl Component for LocalPathPlanning {
         if self.in_deviating.is_new()
             && let Some(d) = self.in_deviating.read()
             && d.data.is_finite()
+            && d.tm.checked("InDeviating").is_ok()
         {
             self.deviation = Some(d.data);
             if d.data > params.deviatinglen {

@@ -59,11 +59,14 @@ fn err(line: Option<usize>, reason: impl Into<String>) -> MapError {
 pub fn load(text: &str) -> Result<GridMap, MapError> {
     let file: MapFile =
         serde_json::from_str(text).map_err(|e| err(Some(e.line()), e.to_string()))?;
+    // The size is checked before anything is allocated for the cells (spec §2 Decision
+    // 0.2): `width × height` within the limit, no overflow.
+    let count = GridMap::check_size(file.width, file.height)?;
     let too_big = |axis: &str, v: u64| err(None, format!("{axis} {v} is too large"));
     let width = usize::try_from(file.width).map_err(|_| too_big("width", file.width))?;
     let height = usize::try_from(file.height).map_err(|_| too_big("height", file.height))?;
     let cells = match (file.rows, file.cells) {
-        (Some(rows), None) => cells_from_rows(&rows, width, height)?,
+        (Some(rows), None) => cells_from_rows(&rows, width, height, count)?,
         (None, Some(cells)) => cells,
         (Some(_), Some(_)) => return Err(err(None, "give either `rows` or `cells`, not both")),
         (None, None) => return Err(err(None, "missing `rows` (or `cells`)")),
@@ -77,23 +80,34 @@ pub fn load(text: &str) -> Result<GridMap, MapError> {
     )
 }
 
-fn cells_from_rows(rows: &[String], width: usize, height: usize) -> Result<Vec<u8>, MapError> {
+/// The cells of `rows` (`count` = `width × height`, already checked against the limit).
+/// Every row is checked before the cells are allocated, so the allocation never exceeds
+/// what the file holds.
+fn cells_from_rows(
+    rows: &[String],
+    width: usize,
+    height: usize,
+    count: usize,
+) -> Result<Vec<u8>, MapError> {
     if rows.len() != height {
         return Err(err(
             None,
             format!("`rows` has {} rows, expected height {height}", rows.len()),
         ));
     }
-    let mut cells = vec![0u8; rows.len().saturating_mul(width)];
     for (r, row) in rows.iter().enumerate() {
-        let y = height - 1 - r;
         let n = row.chars().count();
         if n != width {
+            let y = height - 1 - r;
             return Err(err(
                 None,
                 format!("rows[{r}] (y = {y}) has {n} cells, expected width {width}"),
             ));
         }
+    }
+    let mut cells = vec![0u8; count];
+    for (r, row) in rows.iter().enumerate() {
+        let y = height - 1 - r;
         for (x, c) in row.chars().enumerate() {
             cells[x + y * width] = match c {
                 '.' => 0,

@@ -16,6 +16,7 @@
 pub mod json;
 pub mod movingai;
 pub mod ros;
+mod yaml_mapping;
 
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>, crate::errors::MapError> {

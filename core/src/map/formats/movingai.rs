@@ -101,15 +101,12 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
     }
     let width = width.ok_or_else(|| err(MAP, last_line, "missing `width` in the header"))?;
     let height = height.ok_or_else(|| err(MAP, last_line, "missing `height` in the header"))?;
-    if width.saturating_mul(height) > crate::map::MAX_CELLS {
-        return Err(MapError::TooLarge {
-            width,
-            height,
-            cells: (width as u64).saturating_mul(height as u64),
-            limit: crate::map::MAX_CELLS,
-        });
-    }
-    let mut cells = vec![0u8; width * height];
+    // The size is checked before anything is allocated (spec §2 Decision 0.2), and the
+    // cells are gathered as the rows arrive, so the allocation never exceeds what the file
+    // holds.
+    GridMap::check_size(width as u64, height as u64)?;
+    // The rows in file order (top row first), flipped at the end.
+    let mut file_rows: Vec<u8> = Vec::new();
     let mut row = 0;
     for (n, line) in it {
         last_line = n;
@@ -120,14 +117,13 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
                 format!("more than the {height} rows the header gives"),
             ));
         }
-        let y = height - 1 - row;
         let mut count = 0;
         for (x, c) in line.chars().enumerate() {
             count += 1;
             if x >= width {
                 continue;
             }
-            cells[x + y * width] = match c {
+            file_rows.push(match c {
                 '.' | 'G' | 'S' => 0,
                 '@' | 'O' | 'T' | 'W' => 1,
                 other => {
@@ -137,7 +133,7 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
                         format!("column {x}: {other:?} is not a terrain character (.GS@OTW)"),
                     ));
                 }
-            };
+            });
         }
         if count != width {
             return Err(err(
@@ -154,6 +150,11 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
             last_line,
             format!("only {row} rows, expected height {height}"),
         ));
+    }
+    // Row 0 of the file is y = height − 1.
+    let mut cells = Vec::with_capacity(file_rows.len());
+    for r in file_rows.chunks_exact(width).rev() {
+        cells.extend_from_slice(r);
     }
     GridMap::new(width, height, 1.0, (0.0, 0.0), cells)
 }

@@ -31,13 +31,27 @@
 
 use std::io::Cursor;
 
-use serde::Deserialize;
+use image::ImageDecoder;
+use image::codecs::png::PngDecoder;
+use image::codecs::pnm::PnmDecoder;
 
+use super::yaml_mapping::{Mapping, Problem};
 use crate::errors::MapError;
 use crate::map::{GridMap, MAX_CELLS};
 
 const YAML: &str = "ROS map YAML";
 const IMAGE: &str = "ROS map image";
+
+/// The YAML's keys, read (their values checked by [`parse_yaml`]).
+struct RawYaml {
+    image: String,
+    resolution: f64,
+    origin: Vec<f64>,
+    negate: bool,
+    occupied_thresh: f64,
+    free_thresh: f64,
+    mode: Option<String>,
+}
 
 fn yaml_err(reason: impl Into<String>) -> MapError {
     MapError::Format {
@@ -116,48 +130,32 @@ pub struct RosMap {
     pub unknown: usize,
 }
 
-/// `negate`: an integer in map_server (non-zero = true), or a boolean.
-#[derive(Debug)]
-struct Negate(bool);
-
-impl<'de> Deserialize<'de> for Negate {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct Visitor;
-        impl serde::de::Visitor<'_> for Visitor {
-            type Value = Negate;
-            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-                f.write_str("`negate`: 0, 1, true or false")
-            }
-            fn visit_bool<E>(self, v: bool) -> Result<Negate, E> {
-                Ok(Negate(v))
-            }
-            fn visit_i64<E>(self, v: i64) -> Result<Negate, E> {
-                Ok(Negate(v != 0))
-            }
-            fn visit_u64<E>(self, v: u64) -> Result<Negate, E> {
-                Ok(Negate(v != 0))
-            }
-        }
-        d.deserialize_any(Visitor)
-    }
-}
-
-#[derive(Debug, Deserialize)]
-struct RawYaml {
-    image: String,
-    resolution: f64,
-    origin: Vec<f64>,
-    negate: Negate,
-    occupied_thresh: f64,
-    free_thresh: f64,
-    #[serde(default)]
-    mode: Option<String>,
-}
-
 /// Reads and checks a map_server YAML file.
 pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
-    let raw: RawYaml =
-        serde_saphyr::from_str(text).map_err(|e| yaml_err(e.without_snippet().to_string()))?;
+    let yaml = |p: Problem| MapError::Format {
+        format: YAML,
+        line: p.line,
+        reason: p.reason,
+    };
+    let m = Mapping::parse(text).map_err(yaml)?;
+    let negate = match m.required_text("negate").map_err(yaml)?.trim() {
+        "true" | "True" | "TRUE" => true,
+        "false" | "False" | "FALSE" => false,
+        // map_server reads an integer: non-zero is true.
+        other => match other.parse::<i64>() {
+            Ok(v) => v != 0,
+            Err(_) => return Err(yaml(m.wrong("negate", "0, 1, true or false", other))),
+        },
+    };
+    let raw = RawYaml {
+        image: m.required_text("image").map_err(yaml)?.to_owned(),
+        resolution: m.number("resolution").map_err(yaml)?,
+        origin: m.numbers("origin").map_err(yaml)?,
+        negate,
+        occupied_thresh: m.number("occupied_thresh").map_err(yaml)?,
+        free_thresh: m.number("free_thresh").map_err(yaml)?,
+        mode: m.text("mode").map_err(yaml)?.map(str::to_owned),
+    };
     if raw.image.trim().is_empty() {
         return Err(yaml_err("`image` is empty"));
     }
@@ -204,12 +202,11 @@ pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
             )));
         }
     };
-    let negate = raw.negate.0;
     Ok(RosMapYaml {
         image: raw.image,
         resolution: raw.resolution,
         origin,
-        negate,
+        negate: raw.negate,
         occupied_thresh: raw.occupied_thresh,
         free_thresh: raw.free_thresh,
         mode,
@@ -233,49 +230,59 @@ pub fn load_image(
     image_bytes: &[u8],
     options: &RosLoadOptions,
 ) -> Result<RosMap, MapError> {
-    let reader = image::ImageReader::new(Cursor::new(image_bytes))
-        .with_guessed_format()
-        .map_err(|e| image_err(e.to_string()))?;
-    let kind = match reader.format() {
-        Some(image::ImageFormat::Pnm) => "PGM/PNM",
-        Some(image::ImageFormat::Png) => "PNG",
+    let kind = match image::guess_format(image_bytes) {
+        Ok(image::ImageFormat::Pnm) => "PGM/PNM",
+        Ok(image::ImageFormat::Png) => "PNG",
         _ => return Err(image_err("neither a PGM nor a PNG image")),
     };
     let bad = |e: image::ImageError| image_err(format!("cannot decode the {kind} image: {e}"));
-    let (w, h) = reader.into_dimensions().map_err(bad)?;
-    let (width, height) = (w as usize, h as usize);
-    if width == 0 || height == 0 {
-        return Err(image_err(format!(
-            "image of {width}×{height} pixels is empty"
-        )));
-    }
-    let cells = (width as u64) * (height as u64);
-    if cells > MAX_CELLS as u64 {
-        return Err(MapError::TooLarge {
-            width,
-            height,
-            cells,
-            limit: MAX_CELLS,
-        });
-    }
-    let img = image::load_from_memory(image_bytes).map_err(bad)?;
+    // The format's own decoder, samples as stored (a PNG's palette, low bit depths and
+    // transparency expanded to 8-bit samples, 16-bit ones kept): no conversion of the pixels.
+    let image = if kind == "PNG" {
+        decode(
+            PngDecoder::new(Cursor::new(image_bytes)).map_err(bad)?,
+            None,
+        )
+    } else {
+        // A PNM image is not compressed: it needs at least one bit a pixel (P4's packing), so
+        // a header that claims more pixels than the file can hold is refused before anything
+        // is allocated for them.
+        let most = 8 * image_bytes.len() as u64;
+        decode(PnmDecoder::new(image_bytes).map_err(bad)?, Some(most))
+    };
+    let Decoded {
+        width,
+        height,
+        colour,
+        samples,
+    } = image?.map_err(bad)?;
     let rule = Rule {
         negate: yaml.negate,
         occupied: yaml.occupied_thresh,
         free: yaml.free_thresh,
         mode: yaml.mode,
     };
-    let classes = match &img {
-        image::DynamicImage::ImageLuma8(b) => rule.classify(b.as_raw(), 1, false, 255.0),
-        image::DynamicImage::ImageLumaA8(b) => rule.classify(b.as_raw(), 2, true, 255.0),
-        image::DynamicImage::ImageRgb8(b) => rule.classify(b.as_raw(), 3, false, 255.0),
-        image::DynamicImage::ImageRgba8(b) => rule.classify(b.as_raw(), 4, true, 255.0),
-        image::DynamicImage::ImageLuma16(b) => rule.classify(b.as_raw(), 1, false, 65535.0),
-        image::DynamicImage::ImageLumaA16(b) => rule.classify(b.as_raw(), 2, true, 65535.0),
-        other if other.color().has_alpha() => {
-            rule.classify(other.to_rgba16().as_raw(), 4, true, 65535.0)
+    let wide = || -> Vec<u16> {
+        samples
+            .chunks_exact(2)
+            .map(|b| u16::from_ne_bytes([b[0], b[1]]))
+            .collect()
+    };
+    use image::ColorType as C;
+    let classes = match colour {
+        C::L8 => rule.classify(&samples, 1, false, 255.0),
+        C::La8 => rule.classify(&samples, 2, true, 255.0),
+        C::Rgb8 => rule.classify(&samples, 3, false, 255.0),
+        C::Rgba8 => rule.classify(&samples, 4, true, 255.0),
+        C::L16 => rule.classify(&wide(), 1, false, 65535.0),
+        C::La16 => rule.classify(&wide(), 2, true, 65535.0),
+        C::Rgb16 => rule.classify(&wide(), 3, false, 65535.0),
+        C::Rgba16 => rule.classify(&wide(), 4, true, 65535.0),
+        other => {
+            return Err(image_err(format!(
+                "the {kind} image's samples ({other:?}) are not 8 or 16-bit integers"
+            )));
         }
-        other => rule.classify(other.to_rgb16().as_raw(), 3, false, 65535.0),
     };
     let (mut free, mut occupied, mut unknown) = (0, 0, 0);
     let unknown_value = match options.unknown {
@@ -316,6 +323,49 @@ pub fn load_image(
         occupied,
         unknown,
     })
+}
+
+/// A decoded image: its size, its colour type and its samples (interleaved; 16-bit samples in
+/// native byte order).
+struct Decoded {
+    width: usize,
+    height: usize,
+    colour: image::ColorType,
+    samples: Vec<u8>,
+}
+
+/// Decodes the image once its size, read from its header, is known to be a map's (not
+/// empty, at most [`MAX_CELLS`]: [`GridMap::check_size`], spec §2 Decision 0.2) and, for an
+/// image that is not compressed, at most `most_pixels`; the outer error is the size's, the
+/// inner one the decoder's. Nothing is allocated for the pixels before these checks.
+fn decode(
+    d: impl ImageDecoder,
+    most_pixels: Option<u64>,
+) -> Result<image::ImageResult<Decoded>, MapError> {
+    let (w, h) = d.dimensions();
+    let (width, height) = (w as usize, h as usize);
+    if width == 0 || height == 0 {
+        return Err(image_err(format!(
+            "image of {width}×{height} pixels is empty"
+        )));
+    }
+    GridMap::check_size(u64::from(w), u64::from(h))?;
+    if let Some(most) = most_pixels
+        && u64::from(w) * u64::from(h) > most
+    {
+        return Err(image_err(format!(
+            "the PGM/PNM header claims {w}×{h} pixels, but the file has only {} bytes",
+            most / 8
+        )));
+    }
+    let colour = d.color_type();
+    let mut samples = vec![0; d.total_bytes() as usize];
+    Ok(d.read_image(&mut samples).map(|()| Decoded {
+        width,
+        height,
+        colour,
+        samples,
+    }))
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
