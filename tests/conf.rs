@@ -35,7 +35,7 @@ mod tuned {
         /// The parameters of the test component `Tuned0`.
         pub struct TunedParams {
             /// A gain, reflected at once.
-            gain: f64 = ("Gain", "-", 5.0, 0.0, 100.0, Always, "a gain"),
+            gain: f64 = ("Gain", "-", 5.0, 0.0, 100.0, Always, "a gain", seed: "ゲイン"),
             /// A wheel radius, reflected on activation.
             radius: f64 = ("radiusOfWheel", "m", 0.1, 0.001, f64::INFINITY, OnActivation, "wheel radius"),
             /// A wheel id, reflected on activation.
@@ -97,6 +97,7 @@ fn define_parameters_declares_the_seed_table() {
                 max: 100.0,
                 reflection: Reflection::Always,
                 description: "a gain",
+                seed_text: Some("ゲイン"),
             },
             ParamSpec {
                 name: "radiusOfWheel",
@@ -107,6 +108,7 @@ fn define_parameters_declares_the_seed_table() {
                 max: f64::INFINITY,
                 reflection: Reflection::OnActivation,
                 description: "wheel radius",
+                seed_text: None,
             },
             ParamSpec {
                 name: "wheelID",
@@ -117,6 +119,7 @@ fn define_parameters_declares_the_seed_table() {
                 max: 7.0,
                 reflection: Reflection::OnActivation,
                 description: "wheel id",
+                seed_text: None,
             },
         ]
     );

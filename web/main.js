@@ -10,6 +10,8 @@ import { createStage } from './js/stage.js';
 import { createScenarios } from './js/scenarios.js';
 import { createToolbar } from './js/panels/toolbar.js';
 import { createRtcPanel } from './js/panels/rtc.js';
+import { createSystemBar } from './js/panels/systembar.js';
+import { createLegend } from './js/legend.js';
 import { createEventLog } from './js/panels/event-log.js';
 import { createTelemetry } from './js/panels/telemetry.js';
 import { createTabs } from './js/tabs.js';
@@ -36,7 +38,7 @@ async function boot() {
     demo,
     guard,
     memory: wasm.memory,
-    ui: { tool: 'goal', backward: false, brush: 1, pendingStart: null },
+    ui: { tool: 'goal', backward: false, brush: { size: 1, unit: 'cells' }, pendingStart: null },
     on(name, fn) {
       if (!listeners.has(name)) listeners.set(name, []);
       listeners.get(name).push(fn);
@@ -55,8 +57,10 @@ async function boot() {
   app.notice = createNotice($('notice'), $('notice-text'), $('notice-close'));
   app.log = createEventLog($('log-panel'), app);
   app.stage = createStage($('canvas-wrap'), $('view'), $('overlay'), $('tool-hint'), app);
-  const toolbar = createToolbar($('toolbar'), $('clock-controls'), app);
+  const toolbar = createToolbar($('toolbar'), $('clock-controls'), $('map-controls'), app);
+  const systemBar = createSystemBar($('system-group'), app);
   const rtc = createRtcPanel($('rtc-panel'), app);
+  const legend = createLegend($('legend'), $('legend-body'), $('view'), app);
   const telemetry = createTelemetry($('telemetry'), app);
   const params = createParamsPanel($('params-panel'), app);
   const inspector = createInspector($('inspector-panel'), app);
@@ -72,7 +76,6 @@ async function boot() {
 
   const frameTimes = [];
   const loop = startLoop((elapsedMs) => {
-    app.stage.flushPaint();
     const t0 = performance.now();
     guard.call(() => demo.step(elapsedMs));
     app.stage.draw();
@@ -81,10 +84,14 @@ async function boot() {
     frameTimes.push(t1 - t0);
     if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
     simTime.textContent = `${demo.time_s().toFixed(3)} s`;
-    rtc.update();
+    const components = JSON.parse(demo.components_json());
+    systemBar.update(components);
+    rtc.update(components);
     app.log.update();
     telemetry.update();
     toolbar.update();
+    legend.update();
+    app.notice.update(app.stage.robotBox);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();
     params.update(now, tabs.visible('params'));

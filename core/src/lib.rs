@@ -21,6 +21,7 @@ pub mod interfaces;
 pub mod local;
 pub mod map;
 pub mod motion;
+pub mod present;
 #[cfg(feature = "render")]
 pub mod render;
 pub mod rtc;

@@ -600,6 +600,108 @@ fn the_view_maps_world_to_pixels_and_back() {
     );
 }
 
+#[test]
+fn the_camera_zooms_about_a_point_pans_and_fits() {
+    let map = small_map();
+    let mut renderer = Renderer::new(800, 600).unwrap();
+    let fit = renderer.view(&map);
+    // The point under a pixel stays there as the view zooms about it.
+    let (px, py) = (230.0, 410.0);
+    let under = fit.pixel_to_world(px, py);
+    renderer.zoom_at(&map, px, py, 2.5);
+    let zoomed = renderer.view(&map);
+    assert_eq!(renderer.camera().unwrap().zoom, 2.5);
+    assert!((zoomed.pixels_per_metre() / fit.pixels_per_metre() - 2.5).abs() < 1e-12);
+    let (wx, wy) = zoomed.pixel_to_world(px, py);
+    assert!((wx - under.0).abs() < 1e-9 && (wy - under.1).abs() < 1e-9);
+    // A pan moves the picture with the mouse.
+    let before = zoomed.pixel_to_world(300.0, 300.0);
+    renderer.pan_by(&map, 40.0, -25.0);
+    let panned = renderer.view(&map);
+    let after = panned.pixel_to_world(340.0, 275.0);
+    assert!((after.0 - before.0).abs() < 1e-9 && (after.1 - before.1).abs() < 1e-9);
+    // The centre stays on the map however far it is dragged (right and up: the picture's
+    // middle reaches the map's bottom-left corner); the zoom stays within bounds.
+    renderer.pan_by(&map, 1e6, -1e6);
+    let c = renderer.camera().unwrap();
+    assert_eq!(c.centre, (-1.0, -0.5));
+    renderer.zoom_at(&map, 400.0, 300.0, 1e9);
+    assert_eq!(renderer.camera().unwrap().zoom, rtnav::render::MAX_ZOOM);
+    // Back to 1× (or below): the fitted view, exactly.
+    renderer.zoom_at(&map, 400.0, 300.0, 1e-9);
+    assert_eq!(renderer.camera(), None);
+    assert_eq!(renderer.view(&map), fit);
+    // Nonsense changes nothing.
+    renderer.zoom_at(&map, f64::NAN, 1.0, 2.0);
+    renderer.pan_by(&map, 5.0, 5.0);
+    assert_eq!(renderer.camera(), None);
+}
+
+#[test]
+fn without_the_side_panel_the_map_takes_the_frame_and_a_zoomed_frame_draws() {
+    let d = small_data();
+    let scene = full_scene(&d);
+    // A square frame: the map's width decides its scale.
+    let mut renderer = Renderer::new(600, 600).unwrap();
+    let with_panel = renderer.view(&d.map).pixels_per_metre();
+    renderer.set_side_panel(false);
+    let without = renderer.view(&d.map).pixels_per_metre();
+    assert!(without > with_panel, "{without} > {with_panel}");
+    renderer.render(&scene).unwrap();
+    // Zoomed in on the robot: it is drawn where the view puts it, and bigger.
+    renderer.zoom_at(&d.map, 300.0, 300.0, 1.0);
+    let (rx, ry) = renderer.view(&d.map).world_to_pixel(d.robot.x, d.robot.y);
+    renderer.zoom_at(&d.map, rx, ry, 4.0);
+    let (qx, qy) = renderer.view(&d.map).world_to_pixel(d.robot.x, d.robot.y);
+    let frame = renderer.render(&scene).unwrap();
+    assert!((qx - rx).abs() < 1e-9 && (qy - ry).abs() < 1e-9);
+    // The robot's body (light grey-blue, 0.45 m: about 86 px at this zoom) fills the
+    // pixels behind its centre, between the wheels.
+    let (hx, hy) = (
+        libm::cos(d.robot.theta) * 30.0,
+        -libm::sin(d.robot.theta) * 30.0,
+    );
+    let body = frame.pixel((qx - hx) as u32, (qy - hy) as u32).unwrap();
+    assert!(body[2] > 180 && body[0] > 150, "{body:?}");
+}
+
+#[test]
+fn the_trail_is_drawn_over_the_paths() {
+    // The trail runs along the local path: where they overlap, the trail shows.
+    let d = small_data();
+    let along: Vec<(f64, f64)> = d.local[..d.local.len() / 2]
+        .iter()
+        .map(|&c| d.map.cell_center(c))
+        .collect();
+    let scene = Scene {
+        trail: &along,
+        layers: Layers {
+            heat_map: false,
+            control_points: false,
+            robot: false,
+            local_target: false,
+            start_goal: false,
+            ..Layers::ALL
+        },
+        ..full_scene(&d)
+    };
+    let frame = render(800, 600, &scene);
+    let view = Renderer::new(800, 600).unwrap().view(&d.map);
+    let teal = along
+        .iter()
+        .filter(|&&(x, y)| {
+            let (px, py) = view.world_to_pixel(x, y);
+            let [r, g, b, _] = frame.pixel(px as u32, py as u32).unwrap();
+            g > r + 60 && b > r + 50
+        })
+        .count();
+    assert!(
+        teal * 10 >= along.len() * 9,
+        "{teal} of {} trail points show",
+        along.len()
+    );
+}
+
 // ---------------------------------------------------------------------------------------
 // Refused input: a clear error, the frame unchanged.
 

@@ -689,6 +689,16 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
     let parent = field.parent(cell).unwrap();
     assert_eq!(g, field.potential(parent) + r + a + p);
     assert!(p >= 0.0);
+    // The inspector names the parent and its potential, and the cell's centre in metres.
+    let shown = f.parent.clone().unwrap();
+    assert_eq!(
+        (shown.x, shown.y, shown.potential),
+        (parent.0 as i64, parent.1 as i64, field.potential(parent))
+    );
+    assert_eq!(g, shown.potential + r + a + p);
+    assert_eq!(f.length, Some(info.length));
+    let m = w.map().unwrap();
+    assert_eq!(c.centre, [m.cell_center(cell).0, m.cell_center(cell).1]);
 
     // The local target: G = 0.1, no parts.
     let target = field.request().unwrap().target;
@@ -699,6 +709,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
         (f.repulsion, f.attraction, f.posture),
         (Some(0.0), Some(0.0), Some(0.0))
     );
+    assert_eq!((f.parent, f.length), (None, Some(0.0)), "the target has no parent");
 
     // Inside the closed room: passable, never reached.
     let c = w.inspect_cell(20, 12).unwrap();
@@ -720,6 +731,7 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
         names(&[
             "x",
             "y",
+            "centre",
             "occupancy",
             "obstacle_distance",
             "impassable",
@@ -733,6 +745,8 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
             "repulsion",
             "attraction",
             "posture",
+            "parent",
+            "length",
             "state",
             "unreached"
         ])

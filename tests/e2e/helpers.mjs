@@ -39,8 +39,11 @@ const ARGS = [
 export const WAIT = { timeout: 20_000 };
 export const COLOURS = { Inactive: 'rgb(0, 0, 255)', Active: 'rgb(0, 255, 0)', Error: 'rgb(255, 0, 0)' };
 
-/** Chromium with a fresh profile at 1280×800; `close()` ends it and removes the profile. */
-export async function launch() {
+/**
+ * Chromium with a fresh profile at 1280×800 (or `options`: another viewport, a phone's
+ * `isMobile`, `hasTouch`, `deviceScaleFactor`); `close()` ends it and removes the profile.
+ */
+export async function launch(options = {}) {
   const profile = await mkdtemp(join(tmpdir(), 'rtnav-e2e-profile-'));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: CHROMIUM,
@@ -48,6 +51,7 @@ export async function launch() {
     args: ARGS,
     viewport: { width: 1280, height: 800 },
     acceptDownloads: true,
+    ...options,
   });
   return {
     context,
@@ -79,11 +83,11 @@ export async function openPage(context, query = '', { init } = {}) {
 }
 
 /** Saves a screenshot in tests/e2e/out/ (and, for the README's, docs/ with UPDATE_SCREENSHOTS=1). */
-export async function screenshot(page, name, { docs = true } = {}) {
+export async function screenshot(page, name, { docs = true, fullPage = false } = {}) {
   await mkdir(join(HERE, 'out'), { recursive: true });
   const shot = join(HERE, 'out', name);
   await page.evaluate(() => document.activeElement?.blur());
-  await page.screenshot({ path: shot });
+  await page.screenshot({ path: shot, fullPage });
   if (docs && process.env.UPDATE_SCREENSHOTS === '1') {
     await mkdir(join(REPO, 'docs'), { recursive: true });
     await copyFile(shot, join(REPO, 'docs', name));

@@ -25,6 +25,15 @@ use crate::{Msg, js, msg};
 /// The reason an injected fault gives.
 const FAULT_REASON: &str = "requested from the page";
 
+/// The layers the page starts with: everything the renderer draws on the map; the legend,
+/// scale bar and caption are the page's own (the renderer has no side panel here).
+const PAGE_LAYERS: Layers = Layers {
+    scale_bar: false,
+    legend: false,
+    caption: false,
+    ..Layers::ALL
+};
+
 /// The page's handle: the session, its renderer and the layers shown.
 #[wasm_bindgen]
 #[derive(Debug)]
@@ -43,10 +52,13 @@ pub(crate) struct Inner {
 impl Inner {
     /// An empty session (no map) and a `width × height` renderer.
     pub(crate) fn new(width: u32, height: u32) -> Msg<Self> {
+        let mut renderer = Renderer::new(width, height).map_err(msg)?;
+        // The page shows the legend, colour bar, scale and status itself, beside the map.
+        renderer.set_side_panel(false);
         Ok(Self {
             session: Session::new().map_err(msg)?,
-            renderer: Renderer::new(width, height).map_err(msg)?,
-            layers: Layers::ALL,
+            renderer,
+            layers: PAGE_LAYERS,
             dirty: true,
         })
     }
@@ -89,7 +101,36 @@ impl Inner {
 
     pub(crate) fn replaced(&mut self) {
         self.renderer.invalidate();
+        if let Some(map) = self.session.system().map() {
+            self.renderer.set_camera(map, None);
+        }
         self.dirty = true;
+    }
+
+    // ------------------------------------------------------------------ the view
+
+    /// Zooms by `factor` about the frame pixel `(px, py)` (back to the whole map at 1×).
+    pub(crate) fn zoom_at(&mut self, px: f64, py: f64, factor: f64) {
+        if let Some(map) = self.session.system().map() {
+            self.renderer.zoom_at(map, px, py, factor);
+            self.dirty = true;
+        }
+    }
+
+    /// Drags the picture by `(dx, dy)` frame pixels (while zoomed in).
+    pub(crate) fn pan_by(&mut self, dx: f64, dy: f64) {
+        if let Some(map) = self.session.system().map() {
+            self.renderer.pan_by(map, dx, dy);
+            self.dirty = true;
+        }
+    }
+
+    /// The whole map, fitted.
+    pub(crate) fn fit_view(&mut self) {
+        if let Some(map) = self.session.system().map() {
+            self.renderer.set_camera(map, None);
+            self.dirty = true;
+        }
     }
 
     // ------------------------------------------------------------------ time
@@ -275,16 +316,22 @@ impl Inner {
         let m = s.mission();
         let last = s.record().telemetry().last();
         let pick = |f: fn(&rtnav::system::TelemetrySample) -> f64| last.map_or(0.0, f);
+        let status = self.session.status();
         TelemetryView {
             time_s: s.time(),
             state: s.state(),
             driving: s.is_driving(),
-            status: self.session.status().to_string(),
+            status: status.to_string(),
+            status_kind: serde_json::to_value(&status)
+                .ok()
+                .and_then(|v| v.get("kind").and_then(|k| k.as_str().map(str::to_owned)))
+                .unwrap_or_default(),
             arrived: m.is_arrived(),
             halted: m.is_halted(),
             paused: self.session.paused(),
             speed: self.session.speed(),
             pose: pose.into(),
+            body_radius: s.wiring().motor_control().geometry().radius_of_body_area,
             start: m.start().map(PoseView::from),
             goal: m.goal().map(PoseView::from),
             direction: direction_name(m.direction()),
@@ -625,6 +672,41 @@ impl Demo {
     pub fn world_to_pixel(&self, x: f64, y: f64) -> Option<Vec<f64>> {
         let (px, py) = self.0.view()?.world_to_pixel(x, y);
         Some(vec![px, py])
+    }
+
+    /// Zooms the picture by `factor` about the frame pixel `(px, py)`, which keeps showing
+    /// the same world point (wheel, pinch, the zoom buttons); 1× to 64×, and back to the
+    /// whole map at 1×.
+    pub fn zoom_at(&mut self, px: f64, py: f64, factor: f64) {
+        self.0.zoom_at(px, py, factor);
+    }
+
+    /// Drags the picture by `(dx, dy)` frame pixels, while zoomed in (pan).
+    pub fn pan_by(&mut self, dx: f64, dy: f64) {
+        self.0.pan_by(dx, dy);
+    }
+
+    /// Shows the whole map again (fit).
+    pub fn fit_view(&mut self) {
+        self.0.fit_view();
+    }
+
+    /// The magnification of the whole-map view (1 when it is fitted).
+    pub fn zoom(&self) -> f64 {
+        self.0.renderer.camera().map_or(1.0, |c| c.zoom)
+    }
+
+    /// The heat map's colour scale `[lo, hi, clipped]` (potentials, log scale; `clipped` 1
+    /// when the top half percent is above `hi`), or `undefined` when none is drawn.
+    pub fn heat_range(&self) -> Option<Vec<f64>> {
+        let (lo, hi, clipped) = self.0.renderer.heat_range()?;
+        Some(vec![lo, hi, f64::from(u8::from(clipped))])
+    }
+
+    /// Where the robot has been, as JSON `[[x, y], …]` in metres (points at least 2 cm
+    /// apart, oldest first).
+    pub fn trail_json(&self) -> Result<String, JsError> {
+        json(&self.0.system().record().trail())
     }
 
     /// Frame pixels per metre (`0` without a map).

@@ -65,7 +65,12 @@ impl EventView {
             EventKind::Bump { .. } | EventKind::ComponentError { .. } => "error",
             EventKind::StateChanged { to, .. } if *to == LifecycleState::Error => "error",
             EventKind::StateChanged { .. } => "state",
-            EventKind::PlanningFailed { .. } | EventKind::SafeMode | EventKind::Cleared => "warn",
+            EventKind::PlanningFailed { .. }
+            | EventKind::SafeMode
+            | EventKind::Cleared
+            | EventKind::ClearanceWarning { .. }
+            | EventKind::SafetyStop { .. }
+            | EventKind::RequestRefused { .. } => "warn",
             EventKind::Arrived { .. } => "success",
             _ => "info",
         };
@@ -102,11 +107,16 @@ pub(crate) struct TelemetryView {
     pub driving: bool,
     /// What the robot is doing, in words (`rtnav::system::Status`).
     pub status: String,
+    /// Which [`Status`](rtnav::system::Status) it is (`driving`, `arrived`, `no_route`, …):
+    /// what the page ties its notices to.
+    pub status_kind: String,
     pub arrived: bool,
     pub halted: bool,
     pub paused: bool,
     pub speed: f64,
     pub pose: PoseView,
+    /// The body's radius as drawn \[m\] (MotorControl's `radiusOfBodyArea` in use).
+    pub body_radius: f64,
     pub start: Option<PoseView>,
     pub goal: Option<PoseView>,
     pub direction: &'static str,

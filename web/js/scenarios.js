@@ -49,6 +49,8 @@ export function createScenarios(dom, app) {
   }
 
   function loaded(what) {
+    // Whatever the notices said was about the old system.
+    app.notice.hide();
     app.emit('loaded');
     showAbout();
     // A new system: a fresh log, starting with what it did while loading.

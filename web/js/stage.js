@@ -1,18 +1,30 @@
-// The stage: the canvas that shows the core's frame, and the mouse on it.
+// The stage: the canvas that shows the core's frame, and the mouse (or finger) on it.
 //
 // The frame is drawn by the core's tiny-skia renderer into Rust memory; it reaches the canvas
 // without a copy: a Uint8ClampedArray view over wasm memory at `frame_ptr()` → ImageData →
 // putImageData. The view is made again when wasm memory grows (the old buffer is detached)
 // or the frame moves (a resize). An overlay canvas above it shows what the mouse is doing:
-// the arrow of a start or goal being dragged, the brush, a start waiting for its goal.
+// the arrow of a start or goal being dragged, the brush and the cells a stroke will change,
+// a start waiting for its goal.
+//
+// The view (issue 15): the wheel, a pinch or the zoom buttons zoom about a point (the
+// renderer's `Camera`: the world point under it stays put); the Pan tool, the middle or
+// right mouse button, or two fingers drag the picture; Fit shows the whole map again.
+// A paint stroke is one MapUpdate, sent when the stroke ends (issue 15): the cells under the
+// brush are gathered while it moves and previewed on the overlay.
 
 const TOOL_HINTS = {
   goal: 'Goal: press where the robot should go and drag toward the heading it should end with.',
   start: 'Start: press where the robot should stand and drag toward its heading (while it is not driving).',
-  paint: 'Obstacle: paint cells with the mouse, even while the robot drives (each stroke is a MapUpdate).',
-  erase: 'Erase: free cells with the mouse (a MapUpdate with value 0).',
+  paint: 'Obstacle: paint cells, even while the robot drives: one stroke is one MapUpdate, sent when you let go.',
+  erase: 'Erase: free cells (one stroke is one MapUpdate with value 0).',
+  pan: 'Pan: drag the picture (also the middle or right mouse button, or two fingers). Wheel or pinch to zoom.',
 };
 const COLOURS = { goal: '#e8590c', start: '#1c7ed6', paint: '#212529', erase: '#f8f9fa' };
+/** Zoom per wheel pixel (a notch of 100 px zooms about 1.16×). */
+const WHEEL_ZOOM = 0.0015;
+/** The zoom buttons' step. */
+const BUTTON_ZOOM = 1.5;
 /** A drag shorter than this (canvas pixels) keeps the current heading. */
 const MIN_DRAG_PX = 8;
 
@@ -57,6 +69,22 @@ export function createStage(wrap, view, overlay, hint, app) {
     drawOverlay();
   }
   new ResizeObserver(fit).observe(wrap);
+
+  /**
+   * In the one-column layout (a narrow window) the map's box takes the map's own aspect —
+   * between 260 px and 70 % of the window's height — instead of a fixed share of the window.
+   */
+  const oneColumn = window.matchMedia('(max-width: 980px)');
+  function fitHeight() {
+    if (!map || !oneColumn.matches) {
+      wrap.style.removeProperty('--map-h');
+      return;
+    }
+    const w = wrap.getBoundingClientRect().width;
+    const h = Math.min(Math.max(w * (map.height / map.width) + 16, 260), window.innerHeight * 0.7);
+    wrap.style.setProperty('--map-h', `${Math.round(h)}px`);
+  }
+  window.addEventListener('resize', fitHeight);
 
   /** Renders if anything changed and puts the frame on the canvas. */
   function draw() {
@@ -148,39 +176,109 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   // ------------------------------------------------------------------ the brush
 
-  function addCells([cx, cy]) {
-    const r = (app.ui.brush - 1) / 2;
-    for (let dy = -r; dy <= r; dy++) {
-      for (let dx = -r; dx <= r; dx++) {
-        const x = cx + dx;
-        const y = cy + dy;
-        if (map && x >= 0 && y >= 0 && x < map.width && y < map.height) pending.set(`${x},${y}`, [x, y]);
-      }
+  /**
+   * The cells the brush covers with its centre at world point `(wx, wy)`: in cells, the
+   * n×n cells around the cell under it; in metres, the cells whose centre lies inside the
+   * square of that side (at least the cell under it).
+   */
+  function brushCells(wx, wy) {
+    if (!map) return [];
+    const g = map.grid_size;
+    const [ox, oy] = map.origin;
+    const cx = Math.floor((wx - ox) / g);
+    const cy = Math.floor((wy - oy) / g);
+    const out = [];
+    const add = (x, y) => {
+      if (x >= 0 && y >= 0 && x < map.width && y < map.height) out.push([x, y]);
+    };
+    const { size, unit } = app.ui.brush;
+    if (unit === 'm') {
+      const half = size / 2;
+      const x0 = Math.ceil((wx - half - ox) / g - 0.5);
+      const x1 = Math.floor((wx + half - ox) / g - 0.5);
+      const y0 = Math.ceil((wy - half - oy) / g - 0.5);
+      const y1 = Math.floor((wy + half - oy) / g - 0.5);
+      for (let y = y0; y <= y1; y++) for (let x = x0; x <= x1; x++) add(x, y);
+      if (out.length === 0) add(cx, cy);
+      return out;
     }
+    const r = Math.floor((size - 1) / 2);
+    for (let dy = -r; dy <= size - 1 - r; dy++) for (let dx = -r; dx <= size - 1 - r; dx++) add(cx + dx, cy + dy);
+    return out;
   }
 
-  /** The cells under the brush from `a` to `b` (canvas pixels), every half cell. */
+  /** The brush's side in canvas pixels. */
+  function brushSide() {
+    if (!map) return 0;
+    const { size, unit } = app.ui.brush;
+    return demo.pixels_per_metre() * (unit === 'm' ? size : size * map.grid_size);
+  }
+
+  /** The cells under the brush from `a` to `b` (canvas pixels), every half cell or brush. */
   function paintSegment(a, b) {
     if (!map) return;
-    const cellPx = Math.max(1, demo.pixels_per_metre() * map.grid_size);
-    const steps = Math.max(1, Math.ceil(Math.hypot(b[0] - a[0], b[1] - a[1]) / (cellPx / 2)));
+    const step = Math.max(1, Math.min(demo.pixels_per_metre() * map.grid_size, brushSide()) / 2);
+    const steps = Math.max(1, Math.ceil(Math.hypot(b[0] - a[0], b[1] - a[1]) / step));
     for (let i = 0; i <= steps; i++) {
       const t = i / steps;
-      const c = demo.pixel_to_cell(a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t);
-      if (c) addCells([c[0], c[1]]);
+      const w = demo.pixel_to_world(a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t);
+      if (!w) continue;
+      for (const [x, y] of brushCells(w[0], w[1])) pending.set(`${x},${y}`, [x, y]);
     }
   }
 
-  /** Sends the cells painted since the last frame as one MapUpdate. */
-  function flushPaint() {
-    if (pending.size === 0 || !drag) return;
+  /** Sends the stroke's cells as one MapUpdate (the core sends only what changes). */
+  function sendStroke(tool) {
+    if (pending.size === 0) return;
     const cells = [...pending.values()];
     pending.clear();
     const xs = Int32Array.from(cells, (c) => c[0]);
     const ys = Int32Array.from(cells, (c) => c[1]);
-    const value = drag.tool === 'paint' ? 1 : 0;
+    const value = tool === 'paint' ? 1 : 0;
     const r = app.attempt(() => demo.set_cells(xs, ys, value));
     if (!r.ok) app.notice.show(`MapUpdate refused: ${r.error}`, 'error');
+    app.emit('changed');
+  }
+
+  // ------------------------------------------------------------------ the view
+
+  /** Zooms by `factor` about canvas pixel `p` (the middle of the canvas without one). */
+  function zoomAt(factor, p = [overlay.width / 2, overlay.height / 2]) {
+    if (!map) return;
+    app.attempt(() => demo.zoom_at(p[0], p[1], factor));
+    app.emit('view');
+    drawOverlay();
+  }
+
+  function panBy(dx, dy) {
+    if (!map) return;
+    app.attempt(() => demo.pan_by(dx, dy));
+    app.emit('view');
+    drawOverlay();
+  }
+
+  function fitView() {
+    if (!map) return;
+    app.attempt(() => demo.fit_view());
+    app.emit('view');
+    drawOverlay();
+  }
+
+  overlay.addEventListener('wheel', (e) => {
+    if (!map) return;
+    e.preventDefault();
+    const lines = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1;
+    zoomAt(Math.exp(-e.deltaY * lines * WHEEL_ZOOM), toCanvas(e));
+  }, { passive: false });
+  overlay.addEventListener('contextmenu', (e) => e.preventDefault());
+
+  /** Touch pointers down on the map, by id: their last canvas position. */
+  const touches = new Map();
+  let pinch = null;
+
+  function pinchState() {
+    const [a, b] = [...touches.values()];
+    return { d: Math.hypot(b[0] - a[0], b[1] - a[1]), mid: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2] };
   }
 
   // ------------------------------------------------------------------ the mouse
@@ -191,11 +289,29 @@ export function createStage(wrap, view, overlay, hint, app) {
   }
 
   overlay.addEventListener('pointerdown', (e) => {
-    if (e.button !== 0 || !map) return;
+    if (!map) return;
     const p = toCanvas(e);
+    if (e.pointerType === 'touch') {
+      touches.set(e.pointerId, p);
+      if (touches.size === 2) {
+        // Two fingers: pinch and pan; whatever one finger began is dropped.
+        drag = null;
+        pending.clear();
+        pinch = pinchState();
+        drawOverlay();
+        return;
+      }
+    }
+    const panning = app.ui.tool === 'pan' || e.button === 1 || e.button === 2;
+    if (!panning && e.button !== 0) return;
+    overlay.setPointerCapture(e.pointerId);
+    if (panning) {
+      drag = { tool: 'pan', p0: p, p };
+      e.preventDefault();
+      return;
+    }
     const w = demo.pixel_to_world(p[0], p[1]);
     if (!w) return;
-    overlay.setPointerCapture(e.pointerId);
     const tool = app.ui.tool;
     drag = { tool, p0: p, p, w0: [w[0], w[1]] };
     if (tool === 'paint' || tool === 'erase') {
@@ -207,10 +323,24 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   overlay.addEventListener('pointermove', (e) => {
     const p = toCanvas(e);
+    if (e.pointerType === 'touch' && touches.has(e.pointerId)) {
+      touches.set(e.pointerId, p);
+      if (pinch && touches.size === 2) {
+        const now = pinchState();
+        if (pinch.d > 0 && now.d > 0) zoomAt(now.d / pinch.d, now.mid);
+        panBy(now.mid[0] - pinch.mid[0], now.mid[1] - pinch.mid[1]);
+        pinch = now;
+        return;
+      }
+    }
     hover = p;
     // The cell under the mouse, for whoever listens (an inspector).
     app.emit('hover', map ? demo.pixel_to_cell(p[0], p[1]) ?? null : null);
-    if (drag && (drag.tool === 'paint' || drag.tool === 'erase')) paintSegment(drag.p, p);
+    if (drag && drag.tool === 'pan') {
+      panBy(p[0] - drag.p[0], p[1] - drag.p[1]);
+    } else if (drag && (drag.tool === 'paint' || drag.tool === 'erase')) {
+      paintSegment(drag.p, p);
+    }
     if (drag) drag.p = p;
     drawOverlay();
   });
@@ -222,10 +352,20 @@ export function createStage(wrap, view, overlay, hint, app) {
   });
 
   function finish(e) {
+    if (e && e.pointerType === 'touch') {
+      touches.delete(e.pointerId);
+      if (pinch) {
+        if (touches.size < 2) pinch = null;
+        return;
+      }
+    }
     if (!drag) return;
     const d = drag;
-    if (d.tool === 'paint' || d.tool === 'erase') {
-      flushPaint();
+    drag = null;
+    if (d.tool === 'pan') {
+      // Done while moving.
+    } else if (d.tool === 'paint' || d.tool === 'erase') {
+      sendStroke(d.tool);
     } else {
       const dx = d.p[0] - d.p0[0];
       const dy = d.p[1] - d.p0[1];
@@ -241,12 +381,13 @@ export function createStage(wrap, view, overlay, hint, app) {
       if (d.tool === 'goal') setGoal(pose);
       else setStart(pose);
     }
-    drag = null;
     if (e) overlay.releasePointerCapture?.(e.pointerId);
     drawOverlay();
   }
   overlay.addEventListener('pointerup', finish);
-  overlay.addEventListener('pointercancel', () => {
+  overlay.addEventListener('pointercancel', (e) => {
+    if (e.pointerType === 'touch') touches.delete(e.pointerId);
+    if (touches.size < 2) pinch = null;
     drag = null;
     pending.clear();
     drawOverlay();
@@ -295,14 +436,44 @@ export function createStage(wrap, view, overlay, hint, app) {
       octx.globalAlpha = 1;
     }
     const tool = app.ui.tool;
+    if (map && drag && (drag.tool === 'paint' || drag.tool === 'erase') && pending.size) {
+      // The stroke so far: the cells it will send when it ends.
+      const g = map.grid_size;
+      const [ox, oy] = map.origin;
+      octx.fillStyle = drag.tool === 'paint' ? 'rgba(33, 37, 41, 0.55)' : 'rgba(248, 249, 250, 0.75)';
+      for (const [x, y] of pending.values()) {
+        const a = demo.world_to_pixel(ox + x * g, oy + (y + 1) * g);
+        const b = demo.world_to_pixel(ox + (x + 1) * g, oy + y * g);
+        if (a && b) octx.fillRect(a[0], a[1], b[0] - a[0], b[1] - a[1]);
+      }
+    }
     if (hover && map && (tool === 'paint' || tool === 'erase')) {
-      const side = demo.pixels_per_metre() * map.grid_size * app.ui.brush;
+      const side = brushSide();
       octx.lineWidth = 2;
       octx.strokeStyle = tool === 'paint' ? '#c92a2a' : '#495057';
       octx.setLineDash(tool === 'erase' ? [4, 3] : []);
       octx.strokeRect(hover[0] - side / 2, hover[1] - side / 2, side, side);
       octx.setLineDash([]);
     }
+  }
+
+  /** The robot's body on the page (client coordinates), or null when it is not drawn. */
+  function robotBox() {
+    if (!map) return null;
+    const t = telemetry();
+    if (!t.start && !t.driving) return null;
+    const p = demo.world_to_pixel(t.pose.x, t.pose.y);
+    if (!p) return null;
+    const r = overlay.getBoundingClientRect();
+    const sx = r.width / overlay.width;
+    const sy = r.height / overlay.height;
+    const radius = Math.max(5, t.body_radius * demo.pixels_per_metre());
+    return {
+      left: r.left + (p[0] - radius) * sx,
+      right: r.left + (p[0] + radius) * sx,
+      top: r.top + (p[1] - radius) * sy,
+      bottom: r.top + (p[1] + radius) * sy,
+    };
   }
 
   function setTool(tool) {
@@ -316,6 +487,7 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   app.on('loaded', () => {
     map = JSON.parse(demo.map_json());
+    fitHeight();
     app.ui.pendingStart = null;
     drag = null;
     blitAgain = true;
@@ -324,7 +496,10 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   return {
     draw,
-    flushPaint,
+    robotBox,
+    zoomAt,
+    panBy,
+    fitView,
     setGoal,
     setStart,
     resubmitDirection,

@@ -8,7 +8,7 @@ mod physics_sim;
 pub use drive_control::{DriveControl, DriveControlParams, DriveStatus};
 pub use localization::{Localization, LocalizationMode, LocalizationParams};
 pub use motor_control::{
-    INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
+    GainWarning, INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
 };
 pub use physics_sim::{PhysicsSim, PhysicsSimParams};
 

@@ -20,6 +20,7 @@ use crate::define_parameters;
 use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::motion::{DiffDrive, ModelFrame};
+use crate::present::number;
 use crate::rtc::{
     Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
     Time, TimedDoubleSeq, TimedVelocity,
@@ -38,40 +39,54 @@ define_parameters! {
     /// `on_activated` and locked until the next activation (002 §5.2.3 (2)).
     pub struct MotorControlParams {
         /// `PGainL`: left wheel P gain.
-        p_gain_l: f64 = ("PGainL", "-", 5.0, 0.0, MAX_GAIN, Always, "左車輪モータのPゲイン"),
+        p_gain_l: f64 = ("PGainL", "-", 5.0, 0.0, MAX_GAIN, Always,
+            "left wheel P gain: acts on the wheel-angle error, which is re-anchored every tick, so it works as a rate gain of P·Δt/2 (spec §4 note)",
+            seed: "左車輪モータのPゲイン"),
         /// `DGainL`: left wheel D gain.
-        d_gain_l: f64 = ("DGainL", "-", 2.0, 0.0, MAX_GAIN, Always, "左車輪モータのDゲイン"),
+        d_gain_l: f64 = ("DGainL", "-", 2.0, 0.0, MAX_GAIN, Always,
+            "left wheel D gain: acts on the wheel-rate error; it is the gain that holds the wheel at its target rate (spec §4 note)",
+            seed: "左車輪モータのDゲイン"),
         /// `PGainR`: right wheel P gain.
-        p_gain_r: f64 = ("PGainR", "-", 5.0, 0.0, MAX_GAIN, Always, "右車輪モータのPゲイン"),
+        p_gain_r: f64 = ("PGainR", "-", 5.0, 0.0, MAX_GAIN, Always,
+            "right wheel P gain: acts on the wheel-angle error, which is re-anchored every tick, so it works as a rate gain of P·Δt/2 (spec §4 note)",
+            seed: "右車輪モータのPゲイン"),
         /// `DGainR`: right wheel D gain.
-        d_gain_r: f64 = ("DGainR", "-", 2.0, 0.0, MAX_GAIN, Always, "右車輪モータのDゲイン"),
+        d_gain_r: f64 = ("DGainR", "-", 2.0, 0.0, MAX_GAIN, Always,
+            "right wheel D gain: acts on the wheel-rate error; it is the gain that holds the wheel at its target rate (spec §4 note)",
+            seed: "右車輪モータのDゲイン"),
         /// `SimulatedOffsetX`: ΔX = Xp − Xo, model origin → axle centre (002 §4.2 \[*1\]).
         simulated_offset_x: f64 = ("SimulatedOffsetX", "m", 0.0, -100.0, 100.0, OnActivation,
-            "シミュレーション原点位置オフセット（ΔX）"),
+            "offset ΔX from the simulated model's origin to the axle centre (002 §4.2 [*1])",
+            seed: "シミュレーション原点位置オフセット（ΔX[m])"),
         /// `SimulatedOffsetY`: ΔY = Yp − Yo (RH0: 0.045795).
         simulated_offset_y: f64 = ("SimulatedOffsetY", "m", 0.0, -100.0, 100.0, OnActivation,
-            "シミュレーション原点位置オフセット（ΔY）"),
+            "offset ΔY from the simulated model's origin to the axle centre (002 §4.2 [*1]; RH0: 0.045795 m)",
+            seed: "シミュレーション原点位置オフセット（ΔY[m])"),
         /// `SimulatedOffsetAngle`: Δθ, counter-clockwise from X to the model's 0 rad
         /// (002 §4.2 \[*2\]; RH0: 1.5708).
         simulated_offset_angle: f64 = ("SimulatedOffsetAngle", "rad", 0.0,
             -core::f64::consts::TAU, core::f64::consts::TAU, OnActivation,
-            "シミュレーション原点姿勢オフセット（Δθ）"),
+            "heading offset Δθ of the simulated model, counter-clockwise from the X axis (002 §4.2 [*2]; RH0: 1.5708 rad)",
+            seed: "シミュレーション原点姿勢オフセット（Δθ[rad])"),
         /// `leftWheelID`: index of the left wheel's joint in the angle and torque sequences.
-        left_wheel_id: i32 = ("leftWheelID", "-", 0.0, 0.0, 63.0, OnActivation, "左駆動輪のID番号"),
+        left_wheel_id: i32 = ("leftWheelID", "-", 0.0, 0.0, 63.0, OnActivation,
+            "index of the left wheel's joint in the wheel-angle and torque sequences", seed: "左駆動輪のID番号"),
         /// `rightWheelID`: index of the right wheel's joint.
-        right_wheel_id: i32 = ("rightWheelID", "-", 1.0, 0.0, 63.0, OnActivation, "右駆動輪のID番号"),
+        right_wheel_id: i32 = ("rightWheelID", "-", 1.0, 0.0, 63.0, OnActivation,
+            "index of the right wheel's joint in the wheel-angle and torque sequences", seed: "右駆動輪のID番号"),
         /// `radiusOfLeftWheel` r_L.
         radius_of_left_wheel: f64 = ("radiusOfLeftWheel", "m", 0.1, 0.001, 10.0, OnActivation,
-            "左駆動輪の車輪半径"),
+            "left drive wheel radius", seed: "左駆動輪の車輪半径"),
         /// `radiusOfRightWheel` r_R.
         radius_of_right_wheel: f64 = ("radiusOfRightWheel", "m", 0.1, 0.001, 10.0, OnActivation,
-            "右駆動輪の車輪半径"),
+            "right drive wheel radius", seed: "右駆動輪の車輪半径"),
         /// `lengthOfAxle` 2R.
         length_of_axle: f64 = ("lengthOfAxle", "m", 0.441, 0.001, 10.0, OnActivation,
-            "左右駆動輪間の長さ"),
+            "distance between the two drive wheels", seed: "左右駆動輪間の長さ"),
         /// `radiusOfBodyArea`: the circle around the body (for the safety area).
         radius_of_body_area: f64 = ("radiusOfBodyArea", "m", 0.45, 0.0, 10.0, OnActivation,
-            "ロボット車体全体を円で囲んだ場合の半径"),
+            "radius of the circle around the whole body, for the safety area (the physics and DriveControl use it)",
+            seed: "ロボット車体全体を円で囲んだ場合の半径。安全を考慮したエリア定義用"),
     }
 }
 
@@ -119,6 +134,68 @@ impl fmt::Display for MotorStatus {
             Self::Stopped => f.write_str("stopped (Stop): braking to zero velocity"),
             Self::Finished => f.write_str("finished (Finish): zero torque"),
             Self::SafeStop(e) => write!(f, "safe stop, zero torque: {e}"),
+        }
+    }
+}
+
+/// What a wheel's gains do to its rate loop (spec §4, the note for teaching). The target
+/// angle is re-anchored at the current angle every tick, so `P·(target angle − angle) =
+/// P·(ω* + ω)·Δt/2`: the torque is `(D + P·Δt/2)·ω* − (D − P·Δt/2)·ω`. D holds the wheel at
+/// its target rate; P only adds `P·Δt/2` per rad/s, and above `2·D/Δt` it turns the rate
+/// feedback positive: the loop is unstable.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GainWarning {
+    /// `P > 2·D/Δt`: positive rate feedback, the wheel runs away.
+    Unstable {
+        /// The P gain.
+        p: f64,
+        /// The D gain.
+        d: f64,
+        /// The bound `2·D/Δt`.
+        bound: f64,
+    },
+    /// `D = 0`: nothing holds the wheel at its target rate; P alone gives `P·Δt/2` N·m per
+    /// rad/s of rate error (on a re-anchored angle), far too little: the wheel is limp.
+    Limp {
+        /// The P gain.
+        p: f64,
+        /// The rate gain P alone gives, `P·Δt/2` \[N·m·s/rad\].
+        rate_gain: f64,
+    },
+}
+
+impl GainWarning {
+    /// The warning for one wheel's gains `p`, `d` at MotorControl's period `dt` \[s\], if
+    /// any (spec §4 note).
+    pub fn check(p: f64, d: f64, dt: f64) -> Option<Self> {
+        if d == 0.0 {
+            return Some(Self::Limp {
+                p,
+                rate_gain: p * dt / 2.0,
+            });
+        }
+        let bound = 2.0 * d / dt;
+        (p > bound).then_some(Self::Unstable { p, d, bound })
+    }
+}
+
+impl fmt::Display for GainWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Unstable { p, d, bound } => write!(
+                f,
+                "P {} is above 2·D/Δt = {} (D {}): the rate feedback turns positive and the \
+                 wheel runs away",
+                number(*p),
+                number(*bound),
+                number(*d)
+            ),
+            Self::Limp { rate_gain, .. } => write!(
+                f,
+                "D is 0: nothing holds the wheel at its target rate (P adds only P·Δt/2 = {} \
+                 N·m per rad/s): the wheel is limp",
+                number(*rate_gain)
+            ),
         }
     }
 }

@@ -2,6 +2,8 @@
 //! spec §2) as one value. Every component that takes a map update takes this type, and
 //! [`GridMap::map_update`] applies it.
 
+use std::collections::BTreeMap;
+
 use serde::{Deserialize, Serialize};
 
 use super::{GridMap, MapError};
@@ -34,6 +36,30 @@ impl MapUpdate {
             num: i32::try_from(cells.len()).unwrap_or(i32::MAX),
             tm,
         }
+    }
+
+    /// What the edits `cells` (`(x, y, value)`, in the order made; a cell listed again takes
+    /// its last value) amount to on `map`: each cell once, in the order first listed, and only
+    /// if its value would change — one paint stroke as one update. Cells outside the map and
+    /// values other than 0 and 1 are kept, so that the update is still refused (spec §2
+    /// Decision "atomic"). Empty when nothing would change.
+    pub fn net_changes(cells: &[(i64, i64, i16)], map: &GridMap) -> Vec<(i64, i64, i16)> {
+        let mut last: BTreeMap<(i64, i64), (usize, i16)> = BTreeMap::new();
+        for (order, &(x, y, v)) in cells.iter().enumerate() {
+            let entry = last.entry((x, y)).or_insert((order, v));
+            entry.1 = v;
+        }
+        let mut net: Vec<(usize, (i64, i64, i16))> = last
+            .into_iter()
+            .filter(|&((x, y), (_, v))| {
+                !map.contains(x, y)
+                    || !(v == 0 || v == 1)
+                    || i16::from(map.is_obstacle(x, y)) != v
+            })
+            .map(|((x, y), (order, v))| (order, (x, y, v)))
+            .collect();
+        net.sort_unstable_by_key(|e| e.0);
+        net.into_iter().map(|e| e.1).collect()
     }
 
     /// The same update stamped `tm`.
@@ -95,5 +121,30 @@ impl MapUpdate {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_stroke_nets_to_the_cells_it_changes_each_once_in_order() {
+        // 4 × 3 cells, (1, 1) an obstacle.
+        let mut data = [0u8; 12];
+        data[1 + 4] = 1;
+        let map = GridMap::from_map_data(&data, 4, 3, 0.5).unwrap();
+        // (2, 0) twice, (1, 1) already an obstacle, (0, 0) painted then erased.
+        let stroke = [(2, 0, 1), (1, 1, 1), (0, 0, 1), (2, 0, 1), (3, 2, 1), (0, 0, 0)];
+        assert_eq!(
+            MapUpdate::net_changes(&stroke, &map),
+            [(2, 0, 1), (3, 2, 1)]
+        );
+        // Nothing changes: nothing to send.
+        assert!(MapUpdate::net_changes(&[(1, 1, 1), (0, 0, 0)], &map).is_empty());
+        // Bad cells stay, so the update is refused as a whole.
+        let bad = MapUpdate::net_changes(&[(0, 0, 1), (9, 9, 1), (1, 0, 7)], &map);
+        assert_eq!(bad, [(0, 0, 1), (9, 9, 1), (1, 0, 7)]);
+        assert!(MapUpdate::from_cells(&bad, Time::default()).check(&map).is_err());
     }
 }

@@ -31,7 +31,7 @@ pub enum MotionError {
     #[error(transparent)]
     BadTimestamp(#[from] crate::rtc::TimestampError),
     /// A timestamp not later than the previous one on the same port.
-    #[error("{port}: time went backwards (or stood still): {now_s} s after {previous_s} s")]
+    #[error("{port}: time went backwards (or stood still): {now_s:.3} s after {previous_s:.3} s")]
     TimeWentBackwards {
         /// The port (seed name).
         port: &'static str,
@@ -41,7 +41,7 @@ pub enum MotionError {
         now_s: f64,
     },
     /// No new data on a port for too long.
-    #[error("{port}: no new data for {age_s} s (limit {limit_s} s)")]
+    #[error("{port}: no new data for {age_s:.3} s (limit {limit_s:.3} s)")]
     Stale {
         /// The port (seed name).
         port: &'static str,

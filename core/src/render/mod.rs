@@ -9,7 +9,7 @@
 //! points to frame pixels and back (clicks).
 //!
 //! Layers, bottom to top: occupancy, `dmin` zone, heat map (log scale, viridis) — cached —
-//! then global path, trail, local path, control points, start/goal arrows, local target,
+//! then global path, local path, trail, control points, start/goal arrows, local target,
 //! robot; the side panel holds the colour bar, legend, scale bar, direction and caption.
 //!
 //! **Architecture Invariant**: `render` knows only `map` and `interfaces`: no planner,
@@ -37,4 +37,4 @@ pub use frame::Frame;
 pub use of_system::{FieldBuffers, caption, scene_of};
 pub use renderer::Renderer;
 pub use scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
-pub use view::{MAX_FRAME_SIDE, ViewTransform};
+pub use view::{Camera, MAX_FRAME_SIDE, MAX_ZOOM, ViewTransform};

@@ -116,7 +116,14 @@ pub fn scene_of<'a>(
         trail: system.record().trail(),
         start: mission.start(),
         goal: mission.goal(),
-        direction: lpp.direction(),
+        // The direction LocalPathPlanning drives in; once arrived nothing drives, and the
+        // direction asked for is shown (inside TargetArea the planner's choice at the goal
+        // depends only on which side of the robot the goal's centre lies).
+        direction: if mission.is_arrived() {
+            mission.direction()
+        } else {
+            lpp.direction()
+        },
         caption,
         layers,
     })

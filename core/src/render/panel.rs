@@ -247,7 +247,10 @@ fn legend(pixmap: &mut Pixmap, k: u32, u: f32, x: u32, mut y: u32, bottom: u32, 
                     u,
                 );
             }
-            7 => draw::polyline(pixmap, &line, 1.5 * u, style::TRAIL),
+            7 => {
+                draw::polyline(pixmap, &line, 3.0 * u, style::HALO);
+                draw::polyline(pixmap, &line, 1.75 * u, style::TRAIL);
+            }
             8 | 9 => {
                 let c = if kind == 8 { style::START } else { style::GOAL };
                 draw::pose_arrow(pixmap, (x0 + 2.0, cy), (1.0, 0.0), x1 - x0 - 2.0, u, c);

@@ -16,7 +16,7 @@ use super::panel::{self, PanelInput, TextArea};
 use super::raster::{Base, Heat, LogBins, draw_map, fill_rect, viridis};
 use super::scene::{Layers, Scene};
 use super::style;
-use super::view::{Layout, ViewTransform};
+use super::view::{Camera, Layout, ViewTransform};
 use crate::errors::RenderError;
 use crate::interfaces::Direction;
 use crate::map::GridMap;
@@ -53,6 +53,7 @@ struct BackgroundKey {
     dmin: u64,
     field: Option<u64>,
     layers: Layers,
+    camera: Option<Camera>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,6 +77,10 @@ const SIMPLIFY: f32 = 0.5;
 /// and the browser canvas. Keep one per canvas: it caches the static layers between frames.
 pub struct Renderer {
     layout: Layout,
+    /// Whether the frame has the side panel (when wide enough).
+    side_panel: bool,
+    /// Where the viewer looks (`None`: the whole map, fitted).
+    camera: Option<Camera>,
     frame: Frame,
     background: Pixmap,
     background_key: Option<BackgroundKey>,
@@ -109,11 +114,14 @@ fn pixmap(width: u32, height: u32) -> Result<Pixmap, RenderError> {
 }
 
 impl Renderer {
-    /// A renderer for `width × height` frames (each side 1..=[`super::MAX_FRAME_SIDE`]).
+    /// A renderer for `width × height` frames (each side 1..=[`super::MAX_FRAME_SIDE`]),
+    /// with the side panel (when the frame is wide enough) and the whole map in view.
     pub fn new(width: u32, height: u32) -> Result<Self, RenderError> {
-        let layout = Layout::new(width, height)?;
+        let layout = Layout::new(width, height, true)?;
         Ok(Self {
             layout,
+            side_panel: true,
+            camera: None,
             frame: Frame {
                 pixmap: pixmap(width, height)?,
             },
@@ -133,7 +141,7 @@ impl Renderer {
         if (width, height) == (self.layout.width, self.layout.height) {
             return Ok(());
         }
-        let layout = Layout::new(width, height)?;
+        let layout = Layout::new(width, height, self.side_panel)?;
         let (frame, background) = (pixmap(width, height)?, pixmap(width, height)?);
         self.layout = layout;
         self.frame = Frame { pixmap: frame };
@@ -141,6 +149,52 @@ impl Renderer {
         self.background_key = None;
         self.text_area = None;
         Ok(())
+    }
+
+    /// Draws the side panel (colour bar, legend, scale bar, caption) beside the map when the
+    /// frame is wide enough (`true`, the default: the PNGs of `rtnav render`), or gives the
+    /// map the whole frame (`false`: the page, which shows these itself).
+    pub fn set_side_panel(&mut self, on: bool) {
+        if on == self.side_panel {
+            return;
+        }
+        self.side_panel = on;
+        if let Ok(layout) = Layout::new(self.layout.width, self.layout.height, on) {
+            self.layout = layout;
+        }
+        self.background_key = None;
+        self.text_area = None;
+    }
+
+    /// Where the viewer looks; `None`: the whole map, fitted.
+    pub fn camera(&self) -> Option<Camera> {
+        self.camera
+    }
+
+    /// Looks through `camera` at `map` ([`Camera::clamped`]; `None`: the whole map).
+    pub fn set_camera(&mut self, map: &GridMap, camera: Option<Camera>) {
+        self.camera = camera.and_then(|c| c.clamped(map));
+    }
+
+    /// Zooms by `factor` about the frame pixel `(px, py)`, which keeps showing the same world
+    /// point (a wheel step, a pinch, the zoom buttons about the middle). Back to the whole
+    /// map at a zoom of 1 or less.
+    pub fn zoom_at(&mut self, map: &GridMap, px: f64, py: f64, factor: f64) {
+        self.camera = self.layout.zoom_at(map, self.camera, px, py, factor);
+    }
+
+    /// Drags the picture by `(dx, dy)` frame pixels (while zoomed in).
+    pub fn pan_by(&mut self, map: &GridMap, dx: f64, dy: f64) {
+        self.camera = self.layout.pan_by(map, self.camera, dx, dy);
+    }
+
+    /// The potential range the heat map's colours span, `(lo, hi, clipped)` (log scale;
+    /// `clipped`: the top half percent of the reached cells is above `hi`), when the last
+    /// frame showed a heat map with a reached cell.
+    pub fn heat_range(&self) -> Option<(f64, f64, bool)> {
+        self.background_key.and_then(|k| k.field)?;
+        let range = self.heat.as_ref()?.1.range?;
+        Some((range.lo, range.hi, range.clipped))
     }
 
     /// Forgets the cached layers, so the next frame redraws everything.
@@ -163,7 +217,7 @@ impl Renderer {
     /// The view this renderer uses for `map`: world ↔ pixel, for turning clicks into world
     /// coordinates and back.
     pub fn view(&self, map: &GridMap) -> ViewTransform {
-        self.layout.view(map)
+        self.layout.view_with(map, self.camera)
     }
 
     /// The last frame drawn (blank before the first).
@@ -217,12 +271,13 @@ impl Renderer {
         if self.base.as_ref().map(|b| b.0) != Some(base_key) {
             self.base = Some((base_key, Base::new(map, scene.dmin, &scene.layers)));
         }
-        let view = self.layout.view(map);
+        let view = self.layout.view_with(map, self.camera);
         let key = BackgroundKey {
             map: map_key,
             dmin: scene.dmin.to_bits(),
             field: field.map(|f| f.key),
             layers: scene.layers,
+            camera: self.camera,
         };
         if self.background_key != Some(key) {
             self.draw_background(scene, &view, field.is_some());
@@ -291,15 +346,17 @@ impl Renderer {
             let pts = draw::simplify(&cells(scene.global_path), SIMPLIFY);
             draw::polyline(pm, &pts, 10.0 * u, style::GLOBAL_PATH.with_alpha(100));
         }
-        if layers.trail && scene.trail.len() >= 2 {
-            let pts = draw::decimate(scene.trail.iter().map(|&(x, y)| to_f32(px(x, y))));
-            let pts = draw::simplify(&pts, SIMPLIFY);
-            draw::polyline(pm, &pts, 1.5 * u, style::TRAIL);
-        }
         if layers.local_path && !scene.local_path.is_empty() {
             let pts = draw::simplify(&cells(scene.local_path), SIMPLIFY);
             draw::polyline(pm, &pts, 4.0 * u, style::HALO);
             draw::polyline(pm, &pts, 2.5 * u, style::LOCAL_PATH);
+        }
+        // The trail over the paths (the robot drives along them), with its own halo.
+        if layers.trail && scene.trail.len() >= 2 {
+            let pts = draw::decimate(scene.trail.iter().map(|&(x, y)| to_f32(px(x, y))));
+            let pts = draw::simplify(&pts, SIMPLIFY);
+            draw::polyline(pm, &pts, 3.0 * u, style::HALO);
+            draw::polyline(pm, &pts, 1.75 * u, style::TRAIL);
         }
         if layers.control_points && !scene.control_points.is_empty() {
             let pts: Vec<Px> = scene

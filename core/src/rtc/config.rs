@@ -72,8 +72,11 @@ pub struct ParamSpec {
     pub max: f64,
     /// When a change takes effect.
     pub reflection: Reflection,
-    /// What it means (the seed's 説明).
+    /// What it means, in English.
     pub description: &'static str,
+    /// The seed's own words for it (its 説明 column, Japanese), for the parameters the seeds
+    /// describe (000 and 002 §4.2); `None` for the components the seeds do not describe.
+    pub seed_text: Option<&'static str>,
 }
 
 impl ParamSpec {
@@ -187,7 +190,8 @@ pub trait ParameterSet: Clone + PartialEq + fmt::Debug + 'static {
 /// Declares a parameter struct and its [`ParameterSet`] table.
 ///
 /// Each field is `name: type = (seed name, unit, default, min, max, reflection, description)`
-/// with `type` `f64` or `i32` and `reflection` `Always` or `OnActivation`. The struct derives
+/// with `type` `f64` or `i32` and `reflection` `Always` or `OnActivation`; the description is
+/// English, optionally followed by `seed: "…"`, the seed's own (Japanese) text for it. The struct derives
 /// serde's `Serialize` / `Deserialize`, so the calling crate needs `serde` (with `derive`).
 ///
 /// ```
@@ -205,12 +209,14 @@ pub trait ParameterSet: Clone + PartialEq + fmt::Debug + 'static {
 /// ```
 #[macro_export]
 macro_rules! define_parameters {
+    (@seed) => { None };
+    (@seed $seed:expr) => { Some($seed) };
     (
         $(#[$meta:meta])*
         pub struct $name:ident {
             $(
                 $(#[$fmeta:meta])*
-                $field:ident : $ty:ty = ($pname:expr, $unit:expr, $default:expr, $min:expr, $max:expr, $refl:ident, $desc:expr)
+                $field:ident : $ty:ty = ($pname:expr, $unit:expr, $default:expr, $min:expr, $max:expr, $refl:ident, $desc:expr $(, seed: $seed:expr)?)
             ),* $(,)?
         }
     ) => {
@@ -231,6 +237,7 @@ macro_rules! define_parameters {
                     max: $max,
                     reflection: $crate::rtc::Reflection::$refl,
                     description: $desc,
+                    seed_text: $crate::define_parameters!(@seed $($seed)?),
                 }, )*
             ];
             #[allow(unused_assignments)]

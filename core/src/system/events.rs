@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use crate::interfaces::{Direction, Pose};
 use crate::motion::BumpReport;
+use crate::present::number;
 use crate::rtc::LifecycleState;
 
 /// One thing that happened, at simulated time `time_ns`.
@@ -198,7 +199,11 @@ impl fmt::Display for EventKind {
                 width,
                 height,
                 grid_size,
-            } => write!(f, "map loaded: {width}×{height} cells of {grid_size} m"),
+            } => write!(
+                f,
+                "map loaded: {width}×{height} cells of {} m",
+                number(*grid_size)
+            ),
             EventKind::MapUpdated { cells, changed } => {
                 write!(f, "map updated: {cells} cells listed, {changed} changed")
             }
@@ -304,9 +309,16 @@ impl fmt::Display for EventKind {
                 component,
                 name,
                 value,
-            } => write!(f, "{component}.{name} = {value}"),
+            } => write!(f, "{component}.{name} = {}", number(*value)),
             EventKind::GainsSet { p_l, p_r, d_l, d_r } => {
-                write!(f, "MotorControl SetPDGain({p_l}, {p_r}, {d_l}, {d_r})")
+                write!(
+                    f,
+                    "MotorControl SetPDGain({}, {}, {}, {})",
+                    number(*p_l),
+                    number(*p_r),
+                    number(*d_l),
+                    number(*d_r)
+                )
             }
             EventKind::ConfigurationLoaded { components } => {
                 write!(f, "configuration loaded: {components} component blocks")
@@ -317,9 +329,11 @@ impl fmt::Display for EventKind {
                 body_radius,
             } => write!(
                 f,
-                "warning: the body can touch obstacles: dmin {dmin} m − half a cell \
-                 ({:.3} m) is less than radiusOfBodyArea {body_radius} m",
-                grid_size / 2.0
+                "warning: the body can touch obstacles: dmin {} m − half a cell ({} m) is \
+                 less than radiusOfBodyArea {} m",
+                number(*dmin),
+                number(grid_size / 2.0),
+                number(*body_radius)
             ),
             EventKind::RequestRefused { request, reason } => {
                 write!(f, "{request} was refused: {reason}")

@@ -18,6 +18,8 @@ pub struct CellInspection {
     pub x: i64,
     /// Row.
     pub y: i64,
+    /// The cell's centre in the map's world frame \[m\] (spec §2: `origin + (i + ½)·g`).
+    pub centre: [f64; 2],
     /// The map's value: 0 free, 1 obstacle (spec §2).
     pub occupancy: u8,
     /// Metres from the cell's centre to the nearest obstacle cell's centre (spec §2; 0 on an
@@ -45,12 +47,29 @@ pub struct FieldInspection {
     pub attraction: Option<f64>,
     /// Posture `P`.
     pub posture: Option<f64>,
+    /// The neighbour the cell got its potential from (000 §5.2.4.9: the first finalized
+    /// 8-neighbour, the one with the lowest potential), with that potential `G(parent)`, so
+    /// that `G = G(parent) + R + A + P`; `None` for the local target and cells not reached.
+    pub parent: Option<ParentInspection>,
+    /// Path length `L` from the local target along the parents \[m\].
+    pub length: Option<f64>,
     /// The field's cell state: `Reached`, `Unreached` or `Impassable`
     /// ([`CellState`]'s names).
     pub state: String,
     /// Whether the cell is passable but was not reached (not connected to the local target,
     /// or beyond where the field stopped).
     pub unreached: bool,
+}
+
+/// The parent of a reached cell in the potential field.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParentInspection {
+    /// Column.
+    pub x: i64,
+    /// Row.
+    pub y: i64,
+    /// Its potential `G(parent)`.
+    pub potential: f64,
 }
 
 fn state_name(s: CellState) -> &'static str {
@@ -83,22 +102,34 @@ impl Wiring {
         let field = lpp
             .potential_field()
             .filter(|f| f.width() == map.width() && f.height() == map.height())
-            .and_then(|f| f.info(cell))
-            .map(|info| {
+            .and_then(|f| Some((f, f.info(cell)?)))
+            .map(|(f, info)| {
                 let reached = info.state == CellState::Reached;
                 let defined = |v: f64| reached.then_some(v);
+                let parent = info
+                    .parent
+                    .filter(|_| reached)
+                    .map(|(px, py)| ParentInspection {
+                        x: px as i64,
+                        y: py as i64,
+                        potential: f.potential((px, py)),
+                    });
                 FieldInspection {
                     potential: defined(info.potential),
                     repulsion: defined(info.repulsion),
                     attraction: defined(info.attraction),
                     posture: defined(info.posture),
+                    parent,
+                    length: defined(info.length),
                     state: state_name(info.state).to_owned(),
                     unreached: info.state == CellState::Unreached,
                 }
             });
+        let (cx, cy) = map.cell_center(cell);
         Ok(CellInspection {
             x,
             y,
+            centre: [cx, cy],
             occupancy: map.cells()[map.index(cell)],
             obstacle_distance: distance,
             impassable: map::within_dmin(distance, lpp.params().dmin),

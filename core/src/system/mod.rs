@@ -86,7 +86,7 @@ pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
 pub use input::Input;
-pub use inspect::{CellInspection, FieldInspection};
+pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;
 pub use mission::Mission;
 pub use rates::Rates;

@@ -34,9 +34,10 @@ use super::scenario::{FileResolver, MapSource, MemoryResolver, Scenario};
 use super::setup::{self, BuildOptions, PLAN_SECONDS, SETUP_VERSION, Setup};
 use super::status::Status;
 use super::timeline::Timeline;
+use crate::components::GainWarning;
 use crate::errors::SessionError;
 use crate::interfaces::Direction;
-use crate::map::GridMap;
+use crate::map::{GridMap, MapUpdate};
 use crate::rtc::LifecycleState;
 
 /// The most wall time one [`Session::advance`] turns into simulated time \[ms\]: a tab that
@@ -93,6 +94,12 @@ pub struct PlotWindow {
     pub torque_l: Vec<f64>,
     /// MotorControl's torque, right \[N·m\].
     pub torque_r: Vec<f64>,
+    /// The torque the physics applied, left \[N·m\] (saturated at `MaxTorque`).
+    pub applied_l: Vec<f64>,
+    /// The torque the physics applied, right \[N·m\].
+    pub applied_r: Vec<f64>,
+    /// PhysicsSim's `MaxTorque` now \[N·m\]: the saturation limit.
+    pub max_torque: f64,
     /// DriveControl's commanded speed \[m/s\].
     pub v_cmd: Vec<f64>,
     /// The robot's speed \[m/s\].
@@ -116,6 +123,8 @@ pub struct ComponentParameters {
     pub component: &'static str,
     /// Its instance name (`LocalPathPlanning0`).
     pub instance_name: &'static str,
+    /// Its execution period \[s\] (MotorControl's `Δt` in the note on its gains, spec §4).
+    pub period_s: f64,
     /// Its parameters in declaration order.
     pub params: Vec<ParameterView>,
 }
@@ -140,8 +149,14 @@ pub struct ParameterView {
     pub range: String,
     /// `always` or `on_activation`.
     pub reflection: String,
-    /// What it means.
+    /// What it means, in English.
     pub description: &'static str,
+    /// The seed's own (Japanese) words for it, for the parameters of 000 and 002 §4.2.
+    pub seed_text: Option<&'static str>,
+    /// What the value in use does that a person should know (spec §4 note: gains that make
+    /// the wheel loop unstable or limp; spec §3 Decision 0.2: a `dmin` that lets the body
+    /// touch obstacles); `None` when nothing.
+    pub warning: Option<String>,
     /// The requested value.
     pub value: f64,
     /// The value the component uses.
@@ -486,7 +501,20 @@ impl Session {
     /// Carries out `input` ([`System::apply`]); map edits are recorded in the set-up. While
     /// the robot stands with the planners Active, a request that changes what they plan is
     /// planned at once (module documentation). Refused requests change nothing.
+    ///
+    /// A map edit is sent as what it amounts to ([`MapUpdate::net_changes`]): each cell once,
+    /// only if its value changes; an edit that changes nothing sends nothing (no update, no
+    /// log line, no plan).
     pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
+        if let (Input::MapUpdate { cells }, Some(map)) = (input, self.system.map()) {
+            let net = MapUpdate::net_changes(cells, map);
+            if net.is_empty() {
+                return Ok(());
+            }
+            if net.len() != cells.len() {
+                return self.apply(&Input::MapUpdate { cells: net });
+            }
+        }
         self.system.apply(input)?;
         let replans = match input {
             Input::MapUpdate { cells } => {
@@ -544,11 +572,16 @@ impl Session {
 
     /// Every parameter of the [`TUNABLE`] components, as the parameter panel lists them.
     pub fn parameters_view(&self) -> Vec<ComponentParameters> {
+        let wiring = self.system.wiring();
+        let ec = wiring.execution_context();
         let mut out = Vec::new();
         for kind in TUNABLE {
-            let Ok(config) = self.system.wiring().config(kind) else {
+            let Ok(config) = wiring.config(kind) else {
                 continue;
             };
+            let period_s = ec.period_of(kind.index()).map_or(f64::NAN, |ticks| {
+                (ticks * ec.base_period_ns()) as f64 * 1e-9
+            });
             let params = config
                 .specs()
                 .iter()
@@ -562,6 +595,8 @@ impl Session {
                     range: spec.range_text(),
                     reflection: spec.reflection.to_string(),
                     description: spec.description,
+                    seed_text: spec.seed_text,
+                    warning: self.warning(kind, spec.name, period_s),
                     value: config.value(spec.name).unwrap_or(f64::NAN),
                     effective: config.effective_value(spec.name).unwrap_or(f64::NAN),
                     pending: config.is_pending(spec.name).unwrap_or(false),
@@ -570,10 +605,42 @@ impl Session {
             out.push(ComponentParameters {
                 component: kind.name(),
                 instance_name: kind.instance_name(),
+                period_s,
                 params,
             });
         }
         out
+    }
+
+    /// The warning shown beside parameter `name` of `kind` (see [`ParameterView::warning`]):
+    /// MotorControl's gains of one wheel checked together at its period `dt` \[s\]
+    /// ([`GainWarning`]), LocalPathPlanning's `dmin` against the map and the body
+    /// ([`Wiring::clearance_warning`](super::Wiring::clearance_warning)).
+    fn warning(&self, kind: ComponentKind, name: &str, dt: f64) -> Option<String> {
+        let wiring = self.system.wiring();
+        match (kind, name) {
+            (ComponentKind::MotorControl, "PGainL" | "DGainL" | "PGainR" | "DGainR") => {
+                let p = wiring.motor_control().config().params();
+                let (pg, dg) = if name.ends_with('L') {
+                    (p.p_gain_l, p.d_gain_l)
+                } else {
+                    (p.p_gain_r, p.d_gain_r)
+                };
+                // An unstable loop is P's doing, a limp wheel D's: each beside its gain.
+                match GainWarning::check(pg, dg, dt)? {
+                    w @ GainWarning::Unstable { .. } if name.starts_with('P') => Some(w),
+                    w @ GainWarning::Limp { .. } if name.starts_with('D') => Some(w),
+                    _ => None,
+                }
+                .map(|w| w.to_string())
+            }
+            (ComponentKind::LocalPathPlanning, "dmin") => wiring.clearance_warning().map(|w| {
+                let text = w.to_string();
+                text.strip_prefix("warning: ")
+                    .map_or(text.clone(), str::to_owned)
+            }),
+            _ => None,
+        }
     }
 
     /// The last `seconds` (at most [`MAX_PLOT_SECONDS`]) of telemetry, one array per series.
@@ -588,6 +655,7 @@ impl Session {
         let from = now.saturating_sub(libm::round(seconds * 1e9) as u64);
         let mut w = PlotWindow {
             deviatinglen: s.wiring().local_path_planning().params().deviatinglen,
+            max_torque: s.wiring().physics().physics().params().max_torque,
             ..PlotWindow::default()
         };
         // The window is at the end of a long history: find its start from the back.
@@ -605,6 +673,8 @@ impl Session {
             w.rate_r.push(sample.wheel_rate[1]);
             w.torque_l.push(sample.torque[0]);
             w.torque_r.push(sample.torque[1]);
+            w.applied_l.push(sample.applied_torque[0]);
+            w.applied_r.push(sample.applied_torque[1]);
             w.v_cmd.push(sample.v_cmd);
             w.v.push(sample.v);
             w.w_cmd.push(sample.w_cmd);

@@ -31,6 +31,10 @@ pub struct TelemetrySample {
     pub target_wheel_rate: [f64; 2],
     /// MotorControl's torques `[left, right]` \[N·m\] (before the physics' saturation).
     pub torque: [f64; 2],
+    /// The torques the physics applied in its last step, after saturation at its
+    /// `MaxTorque` \[N·m\]. Not in the CSV or the trace hash (it follows from `torque` and the
+    /// physics' parameters).
+    pub applied_torque: [f64; 2],
     /// DriveControl's commanded speed \[m/s\].
     pub v_cmd: f64,
     /// DriveControl's commanded turn rate \[rad/s\].
@@ -61,6 +65,7 @@ impl TelemetrySample {
             target_wheel_angle: motor.target_wheel_angles(),
             target_wheel_rate: motor.target_wheel_rates(),
             torque: motor.last_torque(),
+            applied_torque: state.torque,
             v_cmd,
             w_cmd,
             v,
@@ -255,6 +260,7 @@ mod tests {
             target_wheel_angle: [0.0; 2],
             target_wheel_rate: [0.0; 2],
             torque: [0.0; 2],
+            applied_torque: [0.0; 2],
             v_cmd: 0.0,
             w_cmd: 0.0,
             v: 0.0,

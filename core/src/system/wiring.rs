@@ -415,8 +415,10 @@ impl Wiring {
         }
         if let Some(stop) = take_new(&self.rx.safety_stop) {
             // DriveControl's clearance check stopped the robot: a new plan from where it
-            // stands (as a deviation would ask for one).
-            let replanning = self.request_replan();
+            // stands (as a deviation would ask for one) — while the robot can move. With the
+            // physics not Active (a bump put it in Error) every new plan would stop the same
+            // way, ten times a second: none is asked for until it runs again.
+            let replanning = self.is_driving() && self.request_replan();
             self.facts.push(EventKind::SafetyStop {
                 ahead: stop.data,
                 replanning,
@@ -752,12 +754,23 @@ impl Wiring {
             return;
         }
         self.clearance_checked = Some(key);
-        if dmin - grid_size / 2.0 < body_radius {
-            self.facts.push(EventKind::ClearanceWarning {
-                dmin,
-                grid_size,
-                body_radius,
-            });
+        if let Some(warning) = self.clearance_warning() {
+            self.facts.push(warning);
         }
+    }
+
+    /// Spec §3 Decision 0.2 "one `dmin`": [`EventKind::ClearanceWarning`] when the values in
+    /// use let the body touch an obstacle (`dmin − GridSize/2 < radiusOfBodyArea`, with
+    /// LocalPathPlanning's `dmin`, the map's `GridSize` and MotorControl's effective
+    /// `radiusOfBodyArea`); `None` when it cannot, or without a map.
+    pub fn clearance_warning(&self) -> Option<EventKind> {
+        let grid_size = self.map()?.grid_size();
+        let dmin = self.local_path_planning().params().dmin;
+        let body_radius = self.motor_control().geometry().radius_of_body_area;
+        (dmin - grid_size / 2.0 < body_radius).then_some(EventKind::ClearanceWarning {
+            dmin,
+            grid_size,
+            body_radius,
+        })
     }
 }

@@ -1,11 +1,14 @@
 // The event log (InventGUI's log): plans, planning failures with their reasons, bumps,
-// arrival, component errors and state changes, map changes — newest first, with simulated
-// time — and the page's own notes (a refused goal, a bad map file).
+// arrival, component errors and state changes, map changes — newest first, in simulated-time
+// order — and the page's own notes (a refused goal, a bad map file). The texts are the
+// core's (`rtnav::system::EventKind`), numbers already written for people; the page only
+// writes the time.
 import { el } from '../dom.js';
 
 const MAX_ENTRIES = 300;
-/** Events important enough to be shown over the canvas too. */
-const NOTICE = new Set(['Bump', 'ComponentError', 'PlanningFailed', 'Arrived']);
+
+/** Simulated time as a person reads it: seconds with three decimals. */
+export const seconds = (t) => `${t.toFixed(3)} s`;
 
 export function createEventLog(root, app) {
   const { demo } = app;
@@ -13,26 +16,54 @@ export function createEventLog(root, app) {
   const clear = el('button', { type: 'button', class: 'link', id: 'clear-log', onclick: () => list.replaceChildren() }, 'clear');
   root.append(el('div', { class: 'panel-head' }, el('h2', {}, 'Event log'), clear), list);
 
+  /** The component an instance name names (`MotorControl0` → `MotorControl`). */
+  const componentOf = (instance) => instance.replace(/\d+$/, '');
+  const stateOf = (name) => JSON.parse(demo.components_json()).find((c) => c.name === name)?.state;
+  const telemetry = () => JSON.parse(demo.telemetry_json());
+
+  /**
+   * The events shown over the canvas too, each tied to the state it describes: the notice
+   * goes when `until` is true (or on Reset, Activate, a new scenario).
+   */
+  const NOTICE = {
+    Bump: () => () => stateOf('PhysicsSim') !== 'Error',
+    ComponentError: (e) => {
+      const name = componentOf(e.data?.component ?? '');
+      return () => stateOf(name) !== 'Error';
+    },
+    PlanningFailed: () => () => !['waiting_for_plan', 'no_route'].includes(telemetry().status_kind),
+    Arrived: () => () => !telemetry().arrived,
+  };
+
+  /** Adds one entry where its time puts it (newest first; equal times keep their order). */
   function add(e) {
-    const item = el('li', { dataset: { kind: e.kind, level: e.level } },
-      el('time', {}, `${e.time_s.toFixed(3)} s`),
+    const item = el('li', { dataset: { kind: e.kind, level: e.level, t: String(e.time_s) } },
+      el('time', {}, seconds(e.time_s)),
       el('span', { class: 'text' }, e.text));
-    list.prepend(item);
+    let before = list.firstElementChild;
+    while (before && Number(before.dataset.t) > e.time_s) before = before.nextElementSibling;
+    list.insertBefore(item, before);
     while (list.children.length > MAX_ENTRIES) list.lastElementChild.remove();
+  }
+
+  function update() {
+    const events = JSON.parse(app.guard.call(() => demo.take_events()) ?? '[]');
+    for (const e of events) add(e);
+    const loud = events.filter((e) => e.kind in NOTICE).at(-1);
+    if (loud) app.notice.show(loud.text, loud.level, { until: NOTICE[loud.kind](loud) });
   }
 
   return {
     clear() {
       list.replaceChildren();
     },
-    update() {
-      const events = JSON.parse(app.guard.call(() => demo.take_events()) ?? '[]');
-      for (const e of events) add(e);
-      const loud = events.filter((e) => NOTICE.has(e.kind)).at(-1);
-      if (loud) app.notice.show(loud.text, loud.level);
-    },
-    /** A note of the page's own (`level`: info, success, warn, error). */
+    update,
+    /**
+     * A note of the page's own (`level`: info, success, warn, error), after the core's
+     * events so far (a request may have run the clock: its events come first).
+     */
     page(text, level = 'info') {
+      update();
       add({ time_s: demo.time_s(), kind: 'Page', level, text });
     },
   };

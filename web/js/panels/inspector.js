@@ -1,7 +1,8 @@
 // The hover inspector (issue 8): what the core knows about the map cell under the mouse
-// (`inspect_cell`): its occupancy, the distance to the nearest obstacle and whether that is
-// within dmin, and LocalPathPlanning's potential there with its parts (000 §5.2.4.9:
-// repulsion from obstacles, attraction to the goal, the posture term) and the cell's state.
+// (`inspect_cell`): its indices and its centre in metres, its occupancy, the distance to the
+// nearest obstacle and whether that is within dmin, and LocalPathPlanning's potential there
+// explained as G = G(parent) + R + A + P (000 §5.2.4.9: the parent's potential, repulsion
+// from obstacles, attraction to the goal, the posture term) and the cell's state.
 //
 // The numbers are shown rounded; each value's exact JSON text is kept in `data-value`, and
 // the whole answer from Rust in the panel's `data-json`, for the end-to-end test (which
@@ -22,15 +23,19 @@ function num(v, digits = 3) {
 }
 
 /** The rows: key, label, how to read it from the answer, how to show it, a hint. */
+const metres = (v) => `${v.toFixed(2)} m`;
 const FIELDS = [
   ['cell', 'Cell', (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, 'Map cell (x, y), x to the right, y up'],
+  ['centre', 'Centre', (j) => j.centre, (v) => `x ${metres(v[0])}, y ${metres(v[1])}`, 'The cell\'s centre in the map\'s coordinates, metres (origin + (index + ½) · GridSize)'],
   ['occupancy', 'Occupancy', (j) => j.occupancy, (v) => `${v} · ${v === 0 ? 'free' : 'obstacle'}`, 'The map value: 0 free, 1 obstacle'],
   ['obstacle_distance', 'Obstacle distance', (j) => j.obstacle_distance, (v) => `${num(v)} m`, 'Straight distance to the nearest obstacle cell (exact EDT)'],
   ['impassable', 'Within dmin', (j) => j.impassable, (v) => (v ? 'yes · impassable' : 'no'), 'Closer to an obstacle than dmin: the planners do not enter it'],
-  ['potential', 'Potential', (j) => j.field?.potential ?? null, num, 'LocalPathPlanning\'s potential U (000 §5.2.4.9); the path descends it'],
-  ['repulsion', '· repulsion', (j) => j.field?.repulsion ?? null, num, 'The obstacles\' part of the potential'],
-  ['attraction', '· attraction', (j) => j.field?.attraction ?? null, num, 'The goal\'s part of the potential'],
-  ['posture', '· posture', (j) => j.field?.posture ?? null, num, 'The start and goal posture\'s part (PostureConsiderationLevel)'],
+  ['potential', 'Potential G', (j) => j.field?.potential ?? null, num, 'LocalPathPlanning\'s potential G (000 §5.2.4.9); the path descends it'],
+  ['parent', '= G(parent)', (j) => j.field?.parent ?? null, (v) => (v ? `${num(v.potential)} at (${v.x}, ${v.y})` : '—'),
+    'The neighbour the cell got its potential from (the first finalized, lowest), and that potential: G = G(parent) + R + A + P'],
+  ['repulsion', '+ repulsion R', (j) => j.field?.repulsion ?? null, num, 'The obstacles\' part of the potential'],
+  ['attraction', '+ attraction A', (j) => j.field?.attraction ?? null, num, 'The goal\'s part of the potential'],
+  ['posture', '+ posture P', (j) => j.field?.posture ?? null, num, 'The start and goal posture\'s part (PostureConsiderationLevel)'],
   ['state', 'Field state', (j) => j.field?.state ?? null, (v) => v ?? '—', 'The cell\'s state in the potential field'],
   ['unreached', 'Unreached', (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), 'Not reached by the field\'s wave from the goal'],
 ];
@@ -55,8 +60,10 @@ export function createInspector(root, app) {
   root.append(
     el('div', { class: 'panel-head' }, el('h2', {}, 'Inspector')),
     where, list, error,
-    el('p', { class: 'panel-hint small' },
-      'The field is LocalPathPlanning\'s potential over its planning window; cells outside it, or not reached from the goal, have none.'),
+    el('p', { class: 'panel-hint small', id: 'inspector-sum' },
+      'A cell\'s potential is its parent\'s plus its own parts: G = G(parent) + R + A + P (000 §5.2.4.9). ',
+      'The field grows from the local target (G = 0.1, no parent) toward the robot; cells not reached from it, ',
+      'or within dmin of an obstacle, have none.'),
   );
 
   function clearValues() {
@@ -91,7 +98,8 @@ export function createInspector(root, app) {
       setText(dd, fmt(v));
     }
     const field = j.field ? '' : ' · no potential field yet';
-    setText(where, `${hovering ? 'Under the mouse' : 'Last cell under the mouse'}: (${j.x}, ${j.y})${field}`);
+    const at = `(${j.x}, ${j.y}) at x ${metres(j.centre[0])}, y ${metres(j.centre[1])}`;
+    setText(where, `${hovering ? 'Under the mouse' : 'Last cell under the mouse'}: ${at}${field}`);
   }
 
   app.on('hover', (c) => {

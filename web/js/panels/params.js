@@ -22,6 +22,10 @@ const REFLECTION = {
     'Reflected on activation (初期化時): a new value waits until the component is next activated (Deactivate, then Activate).'],
 };
 const PD_GAINS = [['PGainL', 'P left'], ['PGainR', 'P right'], ['DGainL', 'D left'], ['DGainR', 'D right']];
+/** Notes beside a parameter, about the system as a whole. */
+const NOTES = {
+  'LocalPathPlanning/dmin': 'One dmin for the system: GlobalPathPlanning\'s follows this one (spec §3).',
+};
 
 /** A parameter's value as text that reads back as the same number. */
 const show = (v) => (v === null || v === undefined ? '' : String(v));
@@ -110,21 +114,28 @@ export function createParamsPanel(root, app) {
     const id = `param-${c.component}-${p.name}`;
     const input = el('input', {
       type: 'text', id, class: 'param-input', inputmode: 'decimal', spellcheck: 'false', autocomplete: 'off',
-      'aria-describedby': `${id}-meta`,
+      'aria-describedby': `${id}-desc ${id}-meta`,
     });
     const [reflectText, reflectTitle] = REFLECTION[p.reflection] ?? [p.reflection, ''];
     const pendingTag = el('span', { class: 'pending-tag', hidden: true });
     const error = el('div', { class: 'param-error', role: 'alert', hidden: true });
+    const warning = el('div', { class: 'param-warning', role: 'status', hidden: true });
+    const about = NOTES[`${c.component}/${p.name}`];
     const node = el('div', { class: 'param', dataset: { component: c.component, name: p.name, reflection: p.reflection } },
       el('label', { class: 'param-name', for: id, title: p.description }, p.name),
       input,
       el('span', { class: 'param-unit' }, unitText(p.unit)),
+      el('div', { class: 'param-desc', id: `${id}-desc` },
+        el('span', { class: 'param-en' }, p.description),
+        p.seed_text ? el('span', { class: 'param-ja', lang: 'ja', title: 'The seed\'s own words (its §4.2 table)' }, p.seed_text) : null,
+        about ? el('span', { class: 'param-note' }, about) : null),
       el('div', { class: 'param-meta', id: `${id}-meta` },
         el('span', { class: 'param-range', title: p.type === 'int' ? 'whole numbers' : 'real numbers' }, `${p.type} ${p.range}`),
         el('span', { class: 'param-reflection', title: reflectTitle }, reflectText),
         pendingTag),
+      warning,
       error);
-    const row = { node, input, pendingTag, error, component: c.component, name: p.name };
+    const row = { node, input, pendingTag, error, warning, component: c.component, name: p.name };
     input.addEventListener('change', () => send(row, input.value.trim()));
     input.addEventListener('keydown', (e) => {
       if (e.key === 'Escape') {
@@ -160,7 +171,15 @@ export function createParamsPanel(root, app) {
       return el('label', { class: 'pd-field' }, el('span', {}, label), input);
     });
     const number = (t) => (t.trim() === '' ? Number.NaN : Number(t));
+    const bounds = el('span', { class: 'pd-bounds', id: 'pd-bounds' });
+    const explain = el('div', { class: 'pd-explain', id: 'pd-explain' },
+      el('p', {}, 'What the gains act on (spec §4): torque = P·(target angle − angle) + D·(target rate − rate). ',
+        'The target angle is re-anchored at the current angle every tick, so P·(target angle − angle) = P·(ω* + ω)·Δt/2: ',
+        'P works as a tiny rate gain of P·Δt/2, and D is the gain that holds the wheel at its target rate.'),
+      el('p', {}, 'The loop is stable while P < 2·D/Δt; above it the rate feedback turns positive and the wheel runs away. ',
+        'With D = 0 nothing holds the wheel: it is limp. ', bounds));
     const form = el('form', { class: 'pd-form', id: 'pd-form', title: 'Motor::SetPDGain (002 §5.2.2): all four gains in one service call' },
+      explain,
       el('div', { class: 'pd-title' }, 'Service Motor::SetPDGain'),
       el('div', { class: 'pd-fields' }, ...fields,
         el('button', { type: 'submit', id: 'pd-send' }, 'SetPDGain')),
@@ -183,6 +202,7 @@ export function createParamsPanel(root, app) {
       app.emit('changed');
     });
     details.querySelector('summary').after(form);
+    inputs.bounds = bounds;
     return inputs;
   }
 
@@ -212,6 +232,10 @@ export function createParamsPanel(root, app) {
         row.pendingTag.hidden = !p.pending;
         setText(row.pendingTag, p.pending ? `pending (next activation) · in use: ${show(p.effective)}` : '');
         row.node.classList.toggle('changed', p.value !== p.default);
+        row.node.classList.toggle('warned', Boolean(p.warning));
+        row.node.dataset.warning = p.warning ?? '';
+        setText(row.warning, p.warning ? `⚠ ${p.warning}` : '');
+        row.warning.hidden = !p.warning;
         row.node.title = p.value !== p.default ? `default ${show(p.default)}` : '';
         if (p.pending) pending++;
       }
@@ -220,6 +244,10 @@ export function createParamsPanel(root, app) {
         for (const [n, input] of group.pd) {
           if (document.activeElement !== input) input.value = show(held.get(`MotorControl/${n}`)?.value);
         }
+        // The bounds now: 2·D/Δt for each wheel.
+        const dt = c.period_s;
+        const bound = (d) => Number((2 * held.get(`MotorControl/${d}`).value / dt).toPrecision(6));
+        setText(group.pd.bounds, `Here Δt = ${Number((dt * 1000).toPrecision(6))} ms: P must stay below ${bound('DGainL')} (left) and ${bound('DGainR')} (right).`);
       }
     }
   }

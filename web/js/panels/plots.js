@@ -1,7 +1,8 @@
 // The plots (issue 8): the last 10 s of telemetry (`plot_json(10)`) on four small canvases
 // drawn here with the 2D context (no chart library):
 //   (a) MotorControl's target wheel rates against the physics' actual ones, left and right;
-//   (b) the wheel torques MotorControl commands;
+//   (b) the wheel torques MotorControl commands, those the physics applies (saturated) and
+//       the saturation limit ±MaxTorque;
 //   (c) DriveControl's commanded v and ω against the actual ones;
 //   (d) the deviation from the path, with a line at LocalPathPlanning's Deviatinglen (above
 //       it, a local replan is requested, 000 §5.2.4.6).
@@ -35,8 +36,16 @@ const PLOTS = [
     ],
   },
   {
+    // Commanded (MotorControl) dashed, applied (the physics, saturated) solid, and the
+    // saturation limit ±MaxTorque. The y-range follows the applied torques and the limit: a
+    // command far beyond it is cut at the frame and said so.
     id: 'plot-torques', title: 'Wheel torques', unit: 'N·m',
-    series: [['torque_l', 'L', LEFT], ['torque_r', 'R', RIGHT]],
+    series: [
+      ['torque_l', 'cmd L', LEFT, DASH], ['applied_l', 'L', LEFT],
+      ['torque_r', 'cmd R', RIGHT, DASH], ['applied_r', 'R', RIGHT],
+    ],
+    range: ['applied_l', 'applied_r'],
+    limit: ['max_torque', '±MaxTorque'], symmetric: true,
   },
   {
     id: 'plot-velocity', title: 'Speed v and turn rate ω', unit: 'm/s · rad/s',
@@ -156,7 +165,11 @@ export function createPlots(root, app) {
     }
 
     const limit = spec.limit ? data[spec.limit[0]] : undefined;
-    const [lo, hi] = yRange(spec.series.map(([k]) => data[k]), limit === undefined ? [] : [limit, 0]);
+    const limits = limit === undefined ? [] : spec.symmetric ? [limit, -limit] : [limit];
+    const ranged = spec.range ?? spec.series.map(([k]) => k);
+    const [lo, hi] = yRange(ranged.map((k) => data[k]), [...limits, 0]);
+    // Values of the other series beyond the range are cut at the frame: say so.
+    const beyond = spec.series.some(([k]) => (data[k] ?? []).some((v) => Number.isFinite(v) && (v > hi || v < lo)));
     const x = (t) => m.l + ((t - t0) / (t1 - t0)) * pw;
     const y = (v) => m.t + (1 - (v - lo) / (hi - lo)) * ph;
 
@@ -205,11 +218,12 @@ export function createPlots(root, app) {
       ctx.lineTo(px, m.t + ph);
       ctx.stroke();
     }
-    // The limit line.
-    if (limit !== undefined && Number.isFinite(limit)) {
+    // The limit line(s).
+    for (const v of limits) {
+      if (!Number.isFinite(v)) continue;
       ctx.strokeStyle = INK;
       ctx.setLineDash([2, 2]);
-      const py = Math.round(y(limit)) + 0.5;
+      const py = Math.round(y(v)) + 0.5;
       ctx.beginPath();
       ctx.moveTo(m.l, py);
       ctx.lineTo(m.l + pw, py);
@@ -239,6 +253,17 @@ export function createPlots(root, app) {
     }
     ctx.restore();
     ctx.setLineDash([]);
+    canvas.dataset.offScale = String(beyond);
+    if (beyond) {
+      // Inside the frame's bottom left, on a white box, clear of the legend.
+      const note = 'commanded: beyond the scale';
+      const w = ctx.measureText(note).width + 8;
+      ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
+      ctx.fillRect(m.l + 2, m.t + ph - 16, w, 14);
+      ctx.fillStyle = '#c92a2a';
+      ctx.textAlign = 'left';
+      ctx.fillText(note, m.l + 6, m.t + ph - 9);
+    }
     if (ts.length === 0) {
       ctx.fillStyle = MUTED;
       ctx.textAlign = 'center';

@@ -1,6 +1,6 @@
 // The RTC panel: every component of the system (spec §0) with its lifecycle state in the RT
-// System Editor's colours, the reason when it is in Error, and the requests of spec §1 —
-// for all components at once and for each one — plus "Inject fault", and for Localization
+// System Editor's colours, the reason when it is in Error, and the requests of spec §1 for
+// each one (those for all at once are in the system bar) — plus "Inject fault", and for Localization
 // a "Sensor glitch" (issue 7): one NaN pose written into its InSimulatedPosition port, as
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
@@ -28,6 +28,8 @@ export function createRtcPanel(root, app) {
   const { demo } = app;
 
   const request = (what, fn) => {
+    // A request that leaves a state (Reset, Activate) ends the notices about it.
+    if (/^(Reset|Activate)/.test(what)) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
       app.notice.show(`${what} refused: ${r.error}`, 'error');
@@ -37,12 +39,6 @@ export function createRtcPanel(root, app) {
     return r;
   };
 
-  const systemBadge = el('span', { id: 'system-state', class: 'state-badge' });
-  const all = {
-    activate: el('button', { type: 'button', id: 'activate-all', onclick: () => request('Activate all', () => demo.activate_all()) }, 'Activate all'),
-    deactivate: el('button', { type: 'button', id: 'deactivate-all', class: 'secondary', onclick: () => request('Deactivate all', () => demo.deactivate_all()) }, 'Deactivate all'),
-    reset: el('button', { type: 'button', id: 'reset-all', class: 'secondary', onclick: () => request('Reset all', () => demo.reset_all()) }, 'Reset all'),
-  };
   const list = el('ol', { class: 'rtc-list', id: 'components' });
   const rows = new Map();
 
@@ -82,16 +78,12 @@ export function createRtcPanel(root, app) {
       el('h2', {}, 'RT-components'),
       el('span', { class: 'legend' },
         ...Object.entries(EDITOR).flatMap(([s, c]) => [el('span', { class: 'swatch', style: `--c:${c}` }), s]))),
-    el('div', { class: 'system-row' }, el('span', { class: 'label' }, 'System'), systemBadge,
-      el('div', { class: 'all-buttons' }, all.activate, all.deactivate, all.reset)),
+    el('p', { class: 'panel-hint' }, 'Activate all, Deactivate all and Reset all are in the bar above, on every tab.'),
     list,
   );
 
   return {
-    update() {
-      const components = JSON.parse(demo.components_json());
-      let active = 0;
-      let error = 0;
+    update(components) {
       for (const c of components) {
         const r = rows.get(c.name) ?? row(c);
         r.li.dataset.state = c.state;
@@ -111,15 +103,7 @@ export function createRtcPanel(root, app) {
         setText(r.fault, c.fault_pending ? 'Fault pending…' : 'Inject fault');
         // A sample only matters to a component that executes: Active only.
         if (r.glitch) r.glitch.disabled = c.state !== 'Active';
-        if (c.state === 'Active') active++;
-        if (c.state === 'Error') error++;
       }
-      const s = demo.system_state();
-      paint(systemBadge, s, EDITOR[s] ?? '#dee2e6');
-      setText(systemBadge, s === 'Partial' ? `Partial · ${active} of ${components.length} Active` : s);
-      all.activate.disabled = !components.some((c) => c.state === 'Inactive');
-      all.deactivate.disabled = active === 0;
-      all.reset.disabled = error === 0 && active === 0;
     },
   };
 }

@@ -21,7 +21,13 @@ export function createShare(root, canvas, app) {
       return;
     }
     // While the robot stands, making the link restarts the set-up from it (what the link
-    // opens with): the panels read the system again.
+    // opens with): the panels read the system again, and the log starts afresh with the
+    // restarted system's events (its clock starts again too).
+    if (!JSON.parse(demo.telemetry_json()).driving) {
+      app.log.clear();
+      app.log.update();
+      app.log.page('Set-up restarted from the share link (what the link opens with).', 'info');
+    }
     app.emit('changed');
     app.stage.draw();
     const url = `${location.origin}${location.pathname}?share=${r.value}`;

@@ -4,12 +4,12 @@
 import { el, setText } from '../dom.js';
 
 const FIELDS = [
+  ['status', 'Status'],
   ['pose', 'Robot'],
   ['speed', 'v · ω'],
   ['goal', 'To goal'],
   ['driven', 'Driven'],
   ['plans', 'Plans'],
-  ['status', 'Status'],
 ];
 
 export function createTelemetry(root, app) {
@@ -18,7 +18,7 @@ export function createTelemetry(root, app) {
   for (const [key, label] of FIELDS) {
     const dd = el('dd', { dataset: { key } });
     values.set(key, dd);
-    root.append(el('div', { class: 'field' }, el('dt', {}, label), dd));
+    root.append(el('div', { class: 'field', dataset: { field: key } }, el('dt', {}, label), dd));
   }
   const set = (key, text) => setText(values.get(key), text);
 
@@ -35,6 +35,7 @@ export function createTelemetry(root, app) {
       set('speed', `${t.v.toFixed(2)} m/s · ${t.w.toFixed(2)} rad/s`);
       set('goal', t.distance_to_goal === null ? '—' : `${t.distance_to_goal.toFixed(2)} m`);
       set('driven', `${t.path_length.toFixed(2)} m`);
+      root.dataset.status = t.status_kind;
       set('plans', `${t.global_plans} global · ${t.local_plans} local`);
       // What the core says is true (rtnav::system::Status), not guessed here.
       let status = t.status.charAt(0).toUpperCase() + t.status.slice(1);

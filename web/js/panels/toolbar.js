@@ -1,16 +1,19 @@
-// The toolbar above the canvas: what the mouse does (goal, start, obstacle, erase), the
-// driving direction, Clear and SafeMode (000 §5.2.4.7) and the layers the renderer draws;
-// beside the clock in the top bar: pause, one tick, speed.
+// The toolbar above the canvas: what the mouse does (goal, start, obstacle, erase, pan) and
+// the brush's size (in cells or metres), the driving direction, Clear and SafeMode
+// (000 §5.2.4.7) and the layers the renderer draws; over the map: zoom in, out, Fit; in the
+// system bar beside the clock: pause, one tick, speed.
 import { el } from '../dom.js';
 
 const TOOLS = [
   ['goal', 'Goal', 'g', 'Drag to set the goal and its heading'],
   ['start', 'Start', 's', 'Drag to place the robot and its heading'],
-  ['paint', 'Obstacle', 'o', 'Paint obstacle cells (MapUpdate)'],
-  ['erase', 'Erase', 'e', 'Erase obstacle cells (MapUpdate)'],
+  ['paint', 'Obstacle', 'o', 'Paint obstacle cells: one stroke is one MapUpdate'],
+  ['erase', 'Erase', 'e', 'Erase obstacle cells: one stroke is one MapUpdate'],
+  ['pan', 'Pan', 'p', 'Drag the picture (wheel or pinch to zoom)'],
 ];
 const SPEEDS = [0.25, 0.5, 1, 2, 4, 8, 16];
-const BRUSHES = [1, 3, 5];
+/** Brush sizes: a square of n×n cells, or of a side in metres. */
+const BRUSHES = { cells: [1, 3, 5, 9], m: [0.25, 0.5, 1, 2] };
 const LAYER_NAMES = {
   occupancy: 'Obstacles',
   dmin_zone: 'dmin zone',
@@ -22,12 +25,9 @@ const LAYER_NAMES = {
   robot: 'Robot',
   trail: 'Trail',
   start_goal: 'Start and goal',
-  scale_bar: 'Scale bar',
-  legend: 'Legend',
-  caption: 'Caption',
 };
 
-export function createToolbar(root, clockRoot, app) {
+export function createToolbar(root, clockRoot, mapRoot, app) {
   const { demo } = app;
 
   // ---- tools
@@ -39,10 +39,22 @@ export function createToolbar(root, clockRoot, app) {
     }, label);
     toolButtons.set(tool, b);
   }
-  const brush = el('select', { id: 'brush', title: 'Brush size in cells' },
-    ...BRUSHES.map((n) => el('option', { value: n }, `${n}×${n}`)));
-  brush.addEventListener('change', () => { app.ui.brush = Number(brush.value); });
-  const brushBox = el('label', { class: 'brush', title: 'Brush size in cells' }, brush);
+  // ---- the brush: its size in cells or in metres, as the teacher chooses
+  const brush = el('select', { id: 'brush', 'aria-label': 'Brush size' });
+  const brushUnit = el('select', { id: 'brush-unit', 'aria-label': 'Brush size unit', title: 'Brush size in map cells or in metres' },
+    el('option', { value: 'cells' }, 'cells'), el('option', { value: 'm' }, 'm'));
+  const fillBrush = () => {
+    const unit = brushUnit.value;
+    const sizes = BRUSHES[unit];
+    const keep = sizes.includes(app.ui.brush.size) && app.ui.brush.unit === unit ? app.ui.brush.size : sizes[unit === 'm' ? 2 : 0];
+    brush.replaceChildren(...sizes.map((n) => el('option', { value: n, selected: n === keep },
+      unit === 'm' ? `${n} m` : `${n}×${n}`)));
+    app.ui.brush = { size: keep, unit };
+  };
+  brushUnit.addEventListener('change', fillBrush);
+  brush.addEventListener('change', () => { app.ui.brush = { size: Number(brush.value), unit: brushUnit.value }; });
+  fillBrush();
+  const brushBox = el('span', { class: 'brush', title: 'Brush: a square of this side' }, 'brush', brush, brushUnit);
   const showTool = (tool) => {
     for (const [t, b] of toolButtons) b.setAttribute('aria-pressed', String(t === tool));
     brushBox.hidden = !(tool === 'paint' || tool === 'erase');
@@ -108,12 +120,34 @@ export function createToolbar(root, clockRoot, app) {
     box.addEventListener('change', () => {
       const r = app.attempt(() => demo.set_layer(name, box.checked));
       if (!r.ok) app.notice.show(r.error, 'error');
+      app.emit('layers');
     });
     return el('label', { class: 'layer' }, box, LAYER_NAMES[name]);
   });
   const layerMenu = el('details', { class: 'menu', id: 'layers' },
     el('summary', { class: 'plain' }, 'Layers'),
     el('div', { class: 'menu-body' }, ...layerBoxes));
+  // The menu opens toward whichever side of the page has room.
+  layerMenu.addEventListener('toggle', () => {
+    const body = layerMenu.querySelector('.menu-body');
+    body.classList.remove('to-right');
+    if (layerMenu.open && body.getBoundingClientRect().left < 0) body.classList.add('to-right');
+  });
+
+  // ---- zoom (over the map, top right)
+  const zoomIn = el('button', { type: 'button', id: 'zoom-in', class: 'plain', title: 'Zoom in (+; also the wheel or a pinch)', 'aria-label': 'Zoom in', onclick: () => app.stage.zoomAt(1.5) }, '+');
+  const zoomOut = el('button', { type: 'button', id: 'zoom-out', class: 'plain', title: 'Zoom out (−)', 'aria-label': 'Zoom out', onclick: () => app.stage.zoomAt(1 / 1.5) }, '−');
+  const zoomFit = el('button', { type: 'button', id: 'zoom-fit', class: 'plain', title: 'Show the whole map (0)', onclick: () => app.stage.fitView() }, 'Fit');
+  mapRoot.append(zoomOut, zoomIn, zoomFit);
+  const showZoom = () => {
+    const z = demo.zoom();
+    mapRoot.dataset.zoom = String(z);
+    zoomFit.textContent = z > 1.0001 ? `Fit · ${z < 10 ? z.toFixed(1) : Math.round(z)}×` : 'Fit';
+    zoomFit.disabled = z <= 1.0001;
+    zoomOut.disabled = z <= 1.0001;
+  };
+  app.on('view', showZoom);
+  app.on('loaded', showZoom);
 
   root.append(
     el('div', { class: 'group', role: 'group', 'aria-label': 'Mouse tool' }, ...toolButtons.values()),
@@ -134,6 +168,9 @@ export function createToolbar(root, clockRoot, app) {
     if (tool) app.emit('tool', tool[0]);
     else if (e.key === ' ') { togglePause(); e.preventDefault(); }
     else if (e.key === '.') app.attempt(() => demo.step_ticks(1));
+    else if (e.key === '+' || e.key === '=') app.stage.zoomAt(1.5);
+    else if (e.key === '-') app.stage.zoomAt(1 / 1.5);
+    else if (e.key === '0') app.stage.fitView();
   });
 
   return {

@@ -1,0 +1,62 @@
+//! Numbers for people: what the core's words (event texts, warnings, statuses) print, so a
+//! value computed in binary reads as a person would write it (`4000`, not
+//! `4000.0000000000005`; `0.0025`, not `0.0025000000000000005`).
+
+/// `v` rounded to six significant digits, without trailing zeros: plain from 10⁻⁴ to below
+/// 10⁹, else in scientific form (`1.5e-7`, `2e12`); `NaN`, `inf` and `-inf` as such.
+pub fn number(v: f64) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    if v == 0.0 {
+        return "0".to_owned();
+    }
+    let a = v.abs();
+    if !(1e-4..1e9).contains(&a) {
+        let s = format!("{v:.5e}");
+        return match s.split_once('e') {
+            Some((mantissa, exponent)) => format!("{}e{exponent}", trim(mantissa)),
+            None => s,
+        };
+    }
+    // Digits after the point for six significant digits.
+    let magnitude = libm::floor(libm::log10(a)) as i32;
+    let decimals = (5 - magnitude).clamp(0, 12) as usize;
+    trim(&format!("{v:.decimals$}"))
+}
+
+fn trim(s: &str) -> String {
+    let t = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    };
+    if t == "-0" { "0".to_owned() } else { t.to_owned() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::number;
+
+    #[test]
+    fn numbers_read_as_a_person_writes_them() {
+        let cases = [
+            (0.0, "0"),
+            (4.0 / 0.001, "4000"),
+            (5.0 * 0.001 / 2.0, "0.0025"),
+            (6.300000000000001, "6.3"),
+            (0.1 + 0.2, "0.3"),
+            (0.45, "0.45"),
+            (-57.12345678, "-57.1235"),
+            (123456.7, "123457"),
+            (1.0e9, "1e9"),
+            (1.5e-7, "1.5e-7"),
+            (-0.0, "0"),
+            (f64::NAN, "NaN"),
+            (f64::INFINITY, "inf"),
+        ];
+        for (v, s) in cases {
+            assert_eq!(number(v), s, "{v}");
+        }
+    }
+}

@@ -1,0 +1,89 @@
+// The legend over the map's corner (issue 15): what the colours and lines mean, the heat
+// map's colour scale (the potential's range, log scale, from the renderer) and a scale bar.
+// It folds away (a <details>, folded at first) and is kept small: never more than about 15 %
+// of the map (on a narrow screen it sits under the map). The colours are the renderer's (`render::style`).
+import { el, setText } from './dom.js';
+
+/** [layer, label, how the swatch looks (a CSS class)]. */
+const ENTRIES = [
+  ['occupancy', 'obstacle', 'sw-obstacle'],
+  ['dmin_zone', 'dmin zone', 'sw-dmin'],
+  ['global_path', 'global path', 'sw-global'],
+  ['local_path', 'local path', 'sw-local'],
+  ['trail', 'trail', 'sw-trail'],
+  ['control_points', 'control point', 'sw-control'],
+  ['local_target', 'local target', 'sw-target'],
+  ['robot', 'robot', 'sw-robot'],
+  ['start_goal', 'start', 'sw-start'],
+  ['start_goal', 'goal', 'sw-goal'],
+];
+/** The scale bar's longest length, CSS pixels. */
+const SCALE_MAX_PX = 70;
+
+/** A short number: three significant digits at most (1.23e5 beyond). */
+function short(v) {
+  const a = Math.abs(v);
+  if (a !== 0 && (a >= 1e4 || a < 0.01)) return v.toExponential(1).replace('e+', 'e');
+  return String(Number(v.toPrecision(3)));
+}
+
+export function createLegend(details, body, canvas, app) {
+  const { demo } = app;
+  // Folded at first: the map is what the page is for; the legend is one click away.
+  details.open = false;
+  const rows = ENTRIES.map(([layer, label, cls]) => {
+    const row = el('li', { class: 'legend-row', dataset: { layer } }, el('span', { class: `sw ${cls}`, 'aria-hidden': 'true' }), label);
+    return row;
+  });
+  const lo = el('span', { class: 'heat-lo' });
+  const hi = el('span', { class: 'heat-hi' });
+  const heat = el('div', { class: 'heat', id: 'legend-heat', title: 'LocalPathPlanning\'s potential, log scale: low (dark) near the local target, high (yellow) far from it' },
+    el('span', { class: 'heat-title' }, 'potential (log)'),
+    el('span', { class: 'heat-bar', 'aria-hidden': 'true' }),
+    el('span', { class: 'heat-labels' }, lo, hi));
+  const bar = el('span', { class: 'scale-bar', 'aria-hidden': 'true' });
+  const barLabel = el('span', { class: 'scale-label' });
+  const scale = el('div', { class: 'scale', id: 'legend-scale' }, bar, barLabel);
+  body.append(el('ul', { class: 'legend-list' }, ...rows), heat, scale);
+
+  let lastRange = '';
+  let lastScale = '';
+
+  function showLayers() {
+    const layers = JSON.parse(demo.layers_json());
+    for (const row of rows) row.hidden = !layers[row.dataset.layer];
+    heat.hidden = !layers.heat_map;
+  }
+  app.on('layers', showLayers);
+  showLayers();
+
+  return {
+    /** Every frame (cheap): the colour scale and the scale bar when they change. */
+    update() {
+      if (!details.open) return;
+      const range = demo.heat_range();
+      const key = range ? range.join(',') : '';
+      if (key !== lastRange) {
+        lastRange = key;
+        heat.classList.toggle('empty', !range);
+        setText(lo, range ? short(range[0]) : '—');
+        setText(hi, range ? `${range[2] ? '>' : ''}${short(range[1])}` : 'no field');
+      }
+      // The scale bar: the longest 1-2-5 length in metres within SCALE_MAX_PX.
+      const rect = canvas.getBoundingClientRect();
+      const cssPerMetre = demo.pixels_per_metre() * (rect.width / Math.max(1, canvas.width));
+      const s = `${cssPerMetre}`;
+      if (s === lastScale || !(cssPerMetre > 0)) return;
+      lastScale = s;
+      let length = 0.001;
+      for (let e = -3; e <= 6; e++) {
+        for (const m of [1, 2, 5]) {
+          const l = m * 10 ** e;
+          if (l * cssPerMetre <= SCALE_MAX_PX) length = l;
+        }
+      }
+      bar.style.width = `${(length * cssPerMetre).toFixed(1)}px`;
+      setText(barLabel, `${short(length)} m`);
+    },
+  };
+}

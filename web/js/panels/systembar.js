@@ -1,0 +1,63 @@
+// The system bar (issue 15), seen from every tab: the whole system's lifecycle state in the
+// RT System Editor's colours, and the requests on all components at once — Activate all,
+// Deactivate all, Reset all — which start and stop the robot. What the robot is doing is
+// the core's `Status` (the telemetry's status), never guessed here.
+import { el, setText, textOn } from '../dom.js';
+
+const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
+
+export function createSystemBar(root, app) {
+  const { demo } = app;
+
+  /** A request on all components; a refusal is shown. Reset and Activate end the notices of the states they leave. */
+  const request = (what, fn, endsNotices) => {
+    if (endsNotices) app.notice.endState();
+    const r = app.attempt(fn);
+    if (!r.ok) {
+      app.notice.show(`${what} refused: ${r.error}`, 'error');
+      app.log.page(`${what} refused: ${r.error}`, 'warn');
+    }
+    app.emit('changed');
+    return r;
+  };
+
+  const badge = el('span', { id: 'system-state', class: 'state-badge', title: 'The whole system: every component\'s lifecycle state together' });
+  const buttons = {
+    activate: el('button', {
+      type: 'button', id: 'activate-all', title: 'Activate every Inactive component (the robot drives to its goal)',
+      onclick: () => request('Activate all', () => demo.activate_all(), true),
+    }, 'Activate all'),
+    deactivate: el('button', {
+      type: 'button', id: 'deactivate-all', class: 'secondary', title: 'Deactivate every Active component (the robot stops)',
+      onclick: () => request('Deactivate all', () => demo.deactivate_all(), false),
+    }, 'Deactivate all'),
+    reset: el('button', {
+      type: 'button', id: 'reset-all', class: 'secondary', title: 'Reset every component in Error and deactivate the Active ones',
+      onclick: () => request('Reset all', () => demo.reset_all(), true),
+    }, 'Reset all'),
+  };
+  root.append(
+    el('span', { class: 'system-label' }, 'System'),
+    badge,
+    el('span', { class: 'all-buttons' }, buttons.activate, buttons.deactivate, buttons.reset),
+  );
+
+  return {
+    /** Every frame: the state and which requests make sense now. */
+    update(components) {
+      const active = components.filter((c) => c.state === 'Active').length;
+      const error = components.filter((c) => c.state === 'Error').length;
+      const s = demo.system_state();
+      if (badge.dataset.state !== s) {
+        badge.dataset.state = s;
+        const colour = EDITOR[s] ?? '#dee2e6';
+        badge.style.background = colour;
+        badge.style.color = textOn(colour);
+      }
+      setText(badge, s === 'Partial' ? `Partial · ${active} of ${components.length} Active` : s);
+      buttons.activate.disabled = !components.some((c) => c.state === 'Inactive');
+      buttons.deactivate.disabled = active === 0;
+      buttons.reset.disabled = error === 0 && active === 0;
+    },
+  };
+}
