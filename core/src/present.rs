@@ -31,7 +31,11 @@ fn trim(s: &str) -> String {
     } else {
         s
     };
-    if t == "-0" { "0".to_owned() } else { t.to_owned() }
+    if t == "-0" {
+        "0".to_owned()
+    } else {
+        t.to_owned()
+    }
 }
 
 #[cfg(test)]

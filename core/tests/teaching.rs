@@ -709,7 +709,11 @@ fn a_cell_shows_the_map_and_the_potential_field_parts() {
         (f.repulsion, f.attraction, f.posture),
         (Some(0.0), Some(0.0), Some(0.0))
     );
-    assert_eq!((f.parent, f.length), (None, Some(0.0)), "the target has no parent");
+    assert_eq!(
+        (f.parent, f.length),
+        (None, Some(0.0)),
+        "the target has no parent"
+    );
 
     // Inside the closed room: passable, never reached.
     let c = w.inspect_cell(20, 12).unwrap();

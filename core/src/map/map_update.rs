@@ -52,9 +52,7 @@ impl MapUpdate {
         let mut net: Vec<(usize, (i64, i64, i16))> = last
             .into_iter()
             .filter(|&((x, y), (_, v))| {
-                !map.contains(x, y)
-                    || !(v == 0 || v == 1)
-                    || i16::from(map.is_obstacle(x, y)) != v
+                !map.contains(x, y) || !(v == 0 || v == 1) || i16::from(map.is_obstacle(x, y)) != v
             })
             .map(|((x, y), (order, v))| (order, (x, y, v)))
             .collect();
@@ -131,11 +129,18 @@ mod tests {
     #[test]
     fn a_stroke_nets_to_the_cells_it_changes_each_once_in_order() {
         // 4 × 3 cells, (1, 1) an obstacle.
-        let mut data = [0u8; 12];
+        let mut data = [0i16; 12];
         data[1 + 4] = 1;
         let map = GridMap::from_map_data(&data, 4, 3, 0.5).unwrap();
         // (2, 0) twice, (1, 1) already an obstacle, (0, 0) painted then erased.
-        let stroke = [(2, 0, 1), (1, 1, 1), (0, 0, 1), (2, 0, 1), (3, 2, 1), (0, 0, 0)];
+        let stroke = [
+            (2, 0, 1),
+            (1, 1, 1),
+            (0, 0, 1),
+            (2, 0, 1),
+            (3, 2, 1),
+            (0, 0, 0),
+        ];
         assert_eq!(
             MapUpdate::net_changes(&stroke, &map),
             [(2, 0, 1), (3, 2, 1)]
@@ -145,6 +150,10 @@ mod tests {
         // Bad cells stay, so the update is refused as a whole.
         let bad = MapUpdate::net_changes(&[(0, 0, 1), (9, 9, 1), (1, 0, 7)], &map);
         assert_eq!(bad, [(0, 0, 1), (9, 9, 1), (1, 0, 7)]);
-        assert!(MapUpdate::from_cells(&bad, Time::default()).check(&map).is_err());
+        assert!(
+            MapUpdate::from_cells(&bad, Time::default())
+                .check(&map)
+                .is_err()
+        );
     }
 }

@@ -121,7 +121,8 @@ impl Camera {
     /// The camera with its zoom clamped to 1..=[`MAX_ZOOM`] and its centre to `map`'s
     /// rectangle; `None` (the fitted view) for a zoom of 1 or less, or a non-finite value.
     pub fn clamped(self, map: &GridMap) -> Option<Self> {
-        let finite = self.zoom.is_finite() && self.centre.0.is_finite() && self.centre.1.is_finite();
+        let finite =
+            self.zoom.is_finite() && self.centre.0.is_finite() && self.centre.1.is_finite();
         if !finite || self.zoom <= 1.0 {
             return None;
         }
@@ -130,7 +131,10 @@ impl Camera {
         let (w, h) = (map.width() as f64 * g, map.height() as f64 * g);
         Some(Self {
             zoom: self.zoom.min(MAX_ZOOM),
-            centre: (self.centre.0.clamp(ox, ox + w), self.centre.1.clamp(oy, oy + h)),
+            centre: (
+                self.centre.0.clamp(ox, ox + w),
+                self.centre.1.clamp(oy, oy + h),
+            ),
         })
     }
 }
@@ -152,7 +156,12 @@ impl Layout {
             scale,
             tx,
             ty,
-            map_rect: (tx + scale * ox, ty - scale * (oy + h), tx + scale * (ox + w), ty - scale * oy),
+            map_rect: (
+                tx + scale * ox,
+                ty - scale * (oy + h),
+                tx + scale * (ox + w),
+                ty - scale * oy,
+            ),
         }
     }
 
@@ -186,7 +195,13 @@ impl Layout {
 
     /// The camera after dragging the picture by `(dx, dy)` frame pixels. The fitted view
     /// shows the whole map and does not move.
-    pub fn pan_by(&self, map: &GridMap, camera: Option<Camera>, dx: f64, dy: f64) -> Option<Camera> {
+    pub fn pan_by(
+        &self,
+        map: &GridMap,
+        camera: Option<Camera>,
+        dx: f64,
+        dy: f64,
+    ) -> Option<Camera> {
         let c = camera?;
         if !(dx.is_finite() && dy.is_finite()) {
             return Some(c);
