@@ -335,9 +335,10 @@ struct Decoded {
 }
 
 /// Decodes the image once its size, read from its header, is known to be a map's (not
-/// empty, at most [`MAX_CELLS`](crate::map::MAX_CELLS): [`GridMap::check_size`], spec §2 Decision 0.2) and, for an
-/// image that is not compressed, at most `most_pixels`; the outer error is the size's, the
-/// inner one the decoder's. Nothing is allocated for the pixels before these checks.
+/// empty, at most [`MAX_CELLS`](crate::map::MAX_CELLS): [`GridMap::check_size`], spec §2
+/// Decision 0.2) and, for an image that is not compressed, at most `most_pixels`; the outer
+/// error is the size's, the inner one the decoder's. Nothing is allocated for the pixels
+/// before these checks.
 fn decode(
     d: impl ImageDecoder,
     most_pixels: Option<u64>,
