@@ -36,6 +36,36 @@ trait Subject: Sized {
     fn decode(b: &mut Bytes<'_>) -> (&'static str, Op<Self>);
 }
 
+/// `text` without the ids of map values (`id: N, revision` — a `GridMap`'s and its
+/// `MapStamp`'s): every map value, even a clone, gets its own id, which decides only whether a
+/// cache is reused, never a result (the twin's maps have other ids by construction).
+pub fn without_map_ids(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(i) = rest.find("id: ") {
+        let after = &rest[i + 4..];
+        let digits = after.bytes().take_while(u8::is_ascii_digit).count();
+        let is_map_id = digits > 0
+            && after[digits..].starts_with(", revision")
+            && !rest[..i].ends_with(|c: char| c.is_alphanumeric() || c == '_');
+        out.push_str(&rest[..i]);
+        if is_map_id {
+            out.push_str("id: _");
+            rest = &after[digits..];
+        } else {
+            out.push_str("id: ");
+            rest = after;
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// A subject's state as the twins compare it.
+fn state<C: Subject>(c: &C) -> String {
+    without_map_ids(&c.fingerprint())
+}
+
 /// Runs the operations of `data` on a subject and its twin.
 fn twins<C: Subject>(data: &[u8]) -> Result<(), String> {
     let (mut a, mut b) = (C::make(), C::make());
@@ -46,12 +76,11 @@ fn twins<C: Subject>(data: &[u8]) -> Result<(), String> {
         match op(&mut a) {
             Some(false) => {
                 REFUSED.with(|r| r.set(r.get() + 1));
-                if a.fingerprint() != b.fingerprint() {
+                let (sa, sb) = (state(&a), state(&b));
+                if sa != sb {
                     return Err(format!(
                         "operation {n} `{what}` was refused but changed the component:\n  \
-                         {}\n  vs the twin\n  {}",
-                        a.fingerprint(),
-                        b.fingerprint()
+                         {sa}\n  vs the twin\n  {sb}"
                     ));
                 }
             }
@@ -66,7 +95,7 @@ fn twins<C: Subject>(data: &[u8]) -> Result<(), String> {
         }
         n += 1;
     }
-    if a.fingerprint() != b.fingerprint() {
+    if state(&a) != state(&b) {
         return Err("the twins differ after the same accepted operations".to_owned());
     }
     Ok(())
