@@ -877,3 +877,34 @@ fn layers_default_to_all_on_and_refuse_unknown_names() {
     let e = serde_json::from_str::<Layers>(r#"{"heatmap": false}"#).unwrap_err();
     assert!(e.to_string().contains("unknown field `heatmap`"), "{e}");
 }
+
+#[test]
+fn after_arrival_the_drawn_direction_is_the_one_asked_for() {
+    // open_field drives forward; inside TargetArea at the goal LocalPathPlanning picks the
+    // direction by which side of the robot the goal's centre lies — after arrival that says
+    // nothing about the drive, and the picture shows the direction asked for.
+    use rtnav::data::RepoResolver;
+    use rtnav::render::{FieldBuffers, scene_of};
+    use rtnav::system::{OutcomeKind, Scenario, ScenarioRun};
+    let text = std::fs::read_to_string("../fixtures/scenarios/open_field.json").unwrap();
+    let scenario = Scenario::from_json(&text).unwrap();
+    let mut run = ScenarioRun::new(&scenario, &RepoResolver::new("..")).unwrap();
+    let mut backward_near_the_goal = false;
+    while run.advance(20).is_none() {
+        let s = run.system();
+        if s.wiring().local_path_planning().direction() == Direction::Backward {
+            backward_near_the_goal = true;
+        }
+    }
+    assert_eq!(run.report().outcome.kind, OutcomeKind::Arrived);
+    assert!(
+        backward_near_the_goal,
+        "the planner chose backward near the goal"
+    );
+    let s = run.system();
+    assert!(s.mission().is_arrived());
+    let mut buffers = FieldBuffers::default();
+    let scene = scene_of(s, &mut buffers, "", Layers::ALL).unwrap();
+    assert_eq!(s.mission().direction(), Direction::Forward);
+    assert_eq!(scene.direction, Direction::Forward);
+}

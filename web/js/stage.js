@@ -326,9 +326,10 @@ export function createStage(wrap, view, overlay, hint, app) {
     if (e.pointerType === 'touch' && touches.has(e.pointerId)) {
       touches.set(e.pointerId, p);
       if (pinch && touches.size === 2) {
+        // The point between the fingers follows them, then the picture scales about it.
         const now = pinchState();
-        if (pinch.d > 0 && now.d > 0) zoomAt(now.d / pinch.d, now.mid);
         panBy(now.mid[0] - pinch.mid[0], now.mid[1] - pinch.mid[1]);
+        if (pinch.d > 0 && now.d > 0) zoomAt(now.d / pinch.d, now.mid);
         pinch = now;
         return;
       }

@@ -42,10 +42,20 @@ pub(crate) struct CellRect {
 /// derived from the distances (passable cells) was made from. Not part of a map's value
 /// (two equal maps have different stamps); it never changes a result, only whether a cache
 /// is reused (spec §6).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 pub(crate) struct MapStamp {
     id: u64,
     revision: u64,
+}
+
+impl core::fmt::Debug for MapStamp {
+    /// The revision only: ids tell apart map values made in one process, not what a map is
+    /// (two equal components print the same).
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("MapStamp")
+            .field("revision", &self.revision)
+            .finish_non_exhaustive()
+    }
 }
 
 /// Every `GridMap` value — made, read or cloned — gets its own id, so a cache keyed by a
@@ -62,7 +72,6 @@ const CHANGES_KEPT: usize = 64;
 /// An occupancy grid. A `GridMap` that exists is valid (spec §2 Decision): dimensions ≥ 1,
 /// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
 /// 0 (free) or 1 (obstacle).
-#[derive(Debug)]
 pub struct GridMap {
     width: usize,
     height: usize,
@@ -79,6 +88,24 @@ pub struct GridMap {
     revision: u64,
     /// The last [`CHANGES_KEPT`] revisions: where the distances changed.
     changes: VecDeque<(u64, CellRect)>,
+}
+
+impl core::fmt::Debug for GridMap {
+    /// Every field but the id, as `PartialEq` (the stamp is not part of the value: two
+    /// equal maps print the same).
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("GridMap")
+            .field("width", &self.width)
+            .field("height", &self.height)
+            .field("grid_size", &self.grid_size)
+            .field("origin", &self.origin)
+            .field("cells", &self.cells)
+            .field("field", &self.field)
+            .field("version", &self.version)
+            .field("revision", &self.revision)
+            .field("changes", &self.changes)
+            .finish_non_exhaustive()
+    }
 }
 
 impl Clone for GridMap {
