@@ -5,7 +5,7 @@
 //! | group | `rtnav` | baseline |
 //! | --- | --- | --- |
 //! | `edit` | a 5 × 5 brush across the route + distance update + global replan + local replan | `before`: the same with a fresh cell-by-cell A* and the reference field |
-//! | `local_plan` | one default local plan (RouteRemakeDistance 10 m), 14 positions along the route | `reference`: the reference field for the same request |
+//! | `local_plan` | one default local plan (RouteRemakeDistance 10 m), positions every 4.5 m along the route, in turn | `reference`: the reference field for the same request |
 //! | `full_field` | the full potential field on a 1000 × 1000 open map | `reference` |
 //! | `route` | GlobalPathPlanning's planner, the 62 m route | `cellwise` (plain A*), `pathfinding` (`pathfinding::astar`) |
 //!

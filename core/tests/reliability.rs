@@ -197,6 +197,34 @@ fn check_size_is_the_one_size_check_of_every_reader() {
     ));
 }
 
+/// Found by `rtnav fuzz` after the ROS reader moved to saphyr-parser's events (seed
+/// 1796172591, target `ros-yaml`, case 747813): flow collections left open after a scalar
+/// (`{000]` over and over) cost the parser about 90 bytes of state per byte of input — 35 MiB
+/// for 384 KB. A map_server YAML is a few lines: a file over `MAX_YAML_BYTES` is refused
+/// before it is parsed, and one within costs at most 128 bytes a byte.
+#[test]
+fn a_ros_yaml_of_open_flow_collections_costs_little_and_a_huge_one_is_refused() {
+    let head = "image: willow-2010-02-4294967295-0.10.pgm\nresolution: 0.100000\n\
+                origin: [1, s.000000, 0.00";
+    let within = format!("{head}{}", "{000]\n".repeat(3000));
+    assert!(within.len() <= ros::MAX_YAML_BYTES);
+    let (result, largest, peak) = measured(|| ros::parse_yaml(&within));
+    assert!(result.is_err());
+    let bound = 256 * 1024 + 128 * within.len() as i64;
+    assert!(
+        (largest as i64) <= bound && peak <= bound,
+        "{} bytes: asked {largest} at once, {peak} at the peak",
+        within.len()
+    );
+    let huge = format!("{head}{}", "{000]\n".repeat(200_000));
+    let (result, largest, _) = measured(|| ros::parse_yaml(&huge));
+    assert!(
+        matches!(&result, Err(MapError::Format { reason, .. }) if reason.contains("at most 65536 bytes")),
+        "{result:?}"
+    );
+    assert!(largest < MIB, "asked for {largest} bytes at once");
+}
+
 // ------------------------------------------------------------------ 2. MotorControl
 
 const MS: u64 = 1_000_000;

@@ -6,7 +6,9 @@
 //! 2. **bounded allocation** — with the counting allocator installed ([`crate::alloc`]), the
 //!    largest single request and the peak of live bytes stay within the target's stated
 //!    bound ([`Target::alloc_bound`]);
-//! 3. **no input slower than [`SLOW`]** (1 s);
+//! 3. **no input slower than [`SLOW`]** (1 s in a release build, which `cargo xtask fuzz`
+//!    makes; 10 s in a debug build — the short run of `cargo test` on a shared CI machine —
+//!    where the same code is roughly ten times slower);
 //! 4. **the target's own invariants** — a map read back equals itself, and, above all, a
 //!    refused call changes nothing (compared with a twin that never got it).
 //!
@@ -29,8 +31,14 @@ use std::time::{Duration, Instant};
 use crate::alloc;
 use crate::rng::{Rng, name_hash};
 
-/// The slowest an input may be.
-pub const SLOW: Duration = Duration::from_secs(1);
+/// The slowest an input may be: 1 s (issue 18), measured in a release build; a debug build
+/// (the short run of `cargo test`) is allowed ten times that, as its code is about ten times
+/// slower.
+pub const SLOW: Duration = if cfg!(debug_assertions) {
+    Duration::from_secs(10)
+} else {
+    Duration::from_secs(1)
+};
 
 /// The longest input the mutator makes \[bytes\].
 const MAX_LEN: usize = 256 * 1024;

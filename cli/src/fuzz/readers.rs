@@ -9,6 +9,8 @@
 //! is compressed), but never more than the size its header claims once checked against the
 //! map limit — [`BASE`] + [`PER_BYTE`] × input bytes + [`PER_PIXEL`] × the pixels the header
 //! claims (0 when it claims more than `MAX_CELLS`, which must be refused before decoding).
+//! A map_server YAML costs up to [`PER_YAML_BYTE`] a byte (its parser's state), and one over
+//! `ros::MAX_YAML_BYTES` is refused before it is parsed.
 
 use std::path::Path;
 
@@ -29,8 +31,18 @@ pub const PER_BYTE: u64 = 64;
 /// copy converted, the classes, the cells, the obstacle distances) \[bytes\].
 pub const PER_PIXEL: u64 = 48;
 
+/// Allocation per byte of a map_server YAML allowed to its reader \[bytes\]: the YAML parser
+/// keeps about 90 bytes of state per byte of input at worst (collections left open), and the
+/// reader refuses a file over [`ros::MAX_YAML_BYTES`] before parsing it.
+pub const PER_YAML_BYTE: u64 = 128;
+
 fn text_bound(case: &Case) -> u64 {
     BASE + PER_BYTE * case.len() as u64
+}
+
+/// The bound of a map_server YAML of `len` bytes.
+fn yaml_bound(len: usize) -> u64 {
+    BASE + PER_YAML_BYTE * len.min(ros::MAX_YAML_BYTES) as u64
 }
 
 fn read(path: &Path) -> Option<Vec<u8>> {
@@ -394,7 +406,9 @@ impl Target for RosMap {
     }
 
     fn alloc_bound(&self, case: &Case) -> u64 {
-        text_bound(case) + PER_PIXEL * claimed_pixels(case.part(1))
+        yaml_bound(case.part(0).len())
+            + PER_BYTE * case.part(1).len() as u64
+            + PER_PIXEL * claimed_pixels(case.part(1))
     }
 }
 
@@ -443,7 +457,7 @@ impl Target for RosYaml {
     }
 
     fn alloc_bound(&self, case: &Case) -> u64 {
-        text_bound(case)
+        yaml_bound(case.len())
     }
 }
 

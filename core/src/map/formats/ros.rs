@@ -40,6 +40,12 @@ use crate::errors::MapError;
 use crate::map::GridMap;
 
 const YAML: &str = "ROS map YAML";
+
+/// The largest map_server YAML file read \[bytes\]: the file is a handful of lines, and the
+/// YAML parser keeps state for every collection left open, about 90 bytes per byte of input
+/// at worst (issue 18, found by `rtnav fuzz`), so a larger file is refused before it is
+/// parsed.
+pub const MAX_YAML_BYTES: usize = 64 * 1024;
 const IMAGE: &str = "ROS map image";
 
 /// The YAML's keys, read (their values checked by [`parse_yaml`]).
@@ -137,6 +143,12 @@ pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
         line: p.line,
         reason: p.reason,
     };
+    if text.len() > MAX_YAML_BYTES {
+        return Err(yaml_err(format!(
+            "the file has {} bytes; a map's YAML is a few lines (at most {MAX_YAML_BYTES} bytes)",
+            text.len()
+        )));
+    }
     let m = Mapping::parse(text).map_err(yaml)?;
     let negate = match m.required_text("negate").map_err(yaml)?.trim() {
         "true" | "True" | "TRUE" => true,
@@ -335,9 +347,10 @@ struct Decoded {
 }
 
 /// Decodes the image once its size, read from its header, is known to be a map's (not
-/// empty, at most [`MAX_CELLS`](crate::map::MAX_CELLS): [`GridMap::check_size`], spec §2 Decision 0.2) and, for an
-/// image that is not compressed, at most `most_pixels`; the outer error is the size's, the
-/// inner one the decoder's. Nothing is allocated for the pixels before these checks.
+/// empty, at most [`MAX_CELLS`](crate::map::MAX_CELLS): [`GridMap::check_size`], spec §2
+/// Decision 0.2) and, for an image that is not compressed, at most `most_pixels`; the outer
+/// error is the size's, the inner one the decoder's. Nothing is allocated for the pixels
+/// before these checks.
 fn decode(
     d: impl ImageDecoder,
     most_pixels: Option<u64>,
