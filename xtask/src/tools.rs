@@ -50,7 +50,12 @@ pub fn cmd(program: &str) -> Command {
 /// `cargo`: the one running us (from `$CARGO`) if known.
 pub fn cargo() -> Command {
     let program = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
-    cmd(&program)
+    let mut c = cmd(&program);
+    // A CI run builds once from a clean clone: incremental caches would only fill its disk.
+    if std::env::var_os("CI").is_some() && std::env::var_os("CARGO_INCREMENTAL").is_none() {
+        c.env("CARGO_INCREMENTAL", "0");
+    }
+    c
 }
 
 fn describe(c: &Command) -> String {
