@@ -6,6 +6,10 @@
 //! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
 //! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
+//! rtnav replay run.rtnav.json --png run.png --csv run.csv
+//! rtnav compare fixtures/scenarios/parking_wall.json \
+//!     --a LocalPathPlanning.PostureConsiderationLevel=0 \
+//!     --b LocalPathPlanning.PostureConsiderationLevel=85 --png compare.png
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
 //! rtnav soak --hours 24 --scenario fixtures/scenarios/willow_garage.json
 //! ```
@@ -36,6 +40,8 @@ use rtnav::system::{
     System, setup,
 };
 use rtnav_cli::{alloc, fuzz, soak};
+
+mod replay_cmd;
 
 // Counts allocations: the fuzzer's allocation bounds and the soak's memory figures.
 #[global_allocator]
@@ -103,6 +109,47 @@ enum Command {
         /// The folder the scenario's paths are relative to.
         #[arg(long)]
         root: Option<PathBuf>,
+    },
+    /// Replay a recorded run (`*.rtnav.json`, downloaded from the page): rebuild its
+    /// set-up, apply every request at its time, run to its end. Exits 1 if the trace hash
+    /// is not the recorded one.
+    Replay {
+        /// The replay file.
+        file: PathBuf,
+        /// Write the final frame here (PNG).
+        #[arg(long)]
+        png: Option<PathBuf>,
+        /// Write the telemetry here (CSV).
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// The project's root (its `fixtures/scenarios/NAME.json`).
+        #[arg(long)]
+        root: Option<PathBuf>,
+        /// Frame size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "1200x800", value_parser = parse_size)]
+        size: (u32, u32),
+    },
+    /// Run a scenario with two configurations and print a table side by side (time to
+    /// goal, path length, minimum clearance, arrival heading error, replans, energy).
+    /// A configuration is `Component.Name=value[,…]` or a file of such lines.
+    Compare {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// Configuration A (drawn solid); empty for the scenario as written.
+        #[arg(long, default_value = "")]
+        a: String,
+        /// Configuration B (drawn as the ghost).
+        #[arg(long)]
+        b: String,
+        /// Draw both runs at their end in one PNG here.
+        #[arg(long)]
+        png: Option<PathBuf>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+        /// Frame size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "1200x800", value_parser = parse_size)]
+        size: (u32, u32),
     },
     /// Fuzz the readers and the hostile calls: mutated fixture inputs and generated ones,
     /// each checked for panics, time (1 s), allocation bounds and refused calls that change
@@ -193,6 +240,21 @@ fn main() -> ExitCode {
             cell,
             root,
         } => inspect(&scenario, cell, root),
+        Command::Replay {
+            file,
+            png,
+            csv,
+            root,
+            size,
+        } => replay_cmd::replay(&file, png.as_deref(), csv.as_deref(), root, size),
+        Command::Compare {
+            scenario,
+            a,
+            b,
+            png,
+            root,
+            size,
+        } => replay_cmd::compare_cmd(&scenario, &a, &b, png.as_deref(), root, size),
         Command::Fuzz {
             seconds,
             cases,

@@ -151,7 +151,7 @@ struct Blocked {
 }
 
 /// The DriveControl RT-component.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct DriveControl {
     name: String,
     config: Configuration<DriveControlParams>,
@@ -376,6 +376,10 @@ fn check_position(msg: &TimedPosition) -> Result<Pose, MotionError> {
 }
 
 impl Component for DriveControl {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

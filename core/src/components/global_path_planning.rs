@@ -63,7 +63,7 @@ pub enum PlanReason {
 }
 
 /// The GlobalPathPlanning RT-component.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct GlobalPathPlanning {
     instance_name: String,
     config: Configuration<GlobalPathPlanningParams>,
@@ -296,6 +296,10 @@ fn prepend(escape: &[Cell], plan: GridPlan) -> GridPlan {
 }
 
 impl Component for GlobalPathPlanning {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.instance_name
     }

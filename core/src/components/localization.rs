@@ -71,7 +71,7 @@ impl LocalizationParams {
 }
 
 /// The Localization RT-component.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Localization {
     name: String,
     config: Configuration<LocalizationParams>,
@@ -210,6 +210,10 @@ impl Localization {
 }
 
 impl Component for Localization {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

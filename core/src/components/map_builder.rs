@@ -30,7 +30,7 @@ pub struct SetMapMessage {
 }
 
 /// The MapBuilder RT-component.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct MapBuilder {
     name: String,
     map: Option<Rc<GridMap>>,
@@ -90,6 +90,10 @@ impl MapBuilder {
 }
 
 impl Component for MapBuilder {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

@@ -18,7 +18,7 @@ use crate::map::{GridMap, MapUpdate};
 use crate::rtc::{Component, OutPort};
 
 /// The MapMaintenance RT-component.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct MapMaintenance {
     name: String,
     map: Option<GridMap>,
@@ -77,6 +77,10 @@ impl MapMaintenance {
 }
 
 impl Component for MapMaintenance {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

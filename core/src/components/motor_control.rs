@@ -264,7 +264,7 @@ struct Target {
 }
 
 /// The MotorControl RT-component (002).
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct MotorControl {
     name: String,
     config: Configuration<MotorControlParams>,
@@ -681,6 +681,10 @@ fn default_geometry() -> MotorGeometry {
 }
 
 impl Component for MotorControl {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

@@ -76,7 +76,7 @@ impl PhysicsSimParams {
 }
 
 /// The physics RT-component.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct PhysicsSim {
     name: String,
     config: Configuration<PhysicsSimParams>,
@@ -259,6 +259,10 @@ impl PhysicsSim {
 }
 
 impl Component for PhysicsSim {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

@@ -34,7 +34,7 @@ mod style;
 mod view;
 
 pub use frame::Frame;
-pub use of_system::{FieldBuffers, caption, scene_of};
+pub use of_system::{FieldBuffers, caption, ghost_of, scene_of};
 pub use renderer::Renderer;
-pub use scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
+pub use scene::{FieldCellState, FieldView, Ghost, Layers, RobotView, Scene};
 pub use view::{Camera, MAX_FRAME_SIDE, MAX_ZOOM, ViewTransform};

@@ -8,7 +8,7 @@ use crate::interfaces::Pose;
 use crate::local::{CellState, PotentialField};
 use crate::system::System;
 
-use super::scene::{FieldCellState, FieldView, Layers, RobotView, Scene};
+use super::scene::{FieldCellState, FieldView, Ghost, Layers, RobotView, Scene};
 
 /// The potential field in the renderer's form (`f64` and [`FieldCellState`] per cell),
 /// converted when LocalPathPlanning's plan count changes: a drawing cache, kept by the
@@ -65,6 +65,25 @@ impl FieldBuffers {
     }
 }
 
+/// `system`'s robot and trail as a [`Ghost`] (the compare view's run B); `None` before it
+/// was placed.
+pub fn ghost_of(system: &System) -> Option<Ghost<'_>> {
+    let wiring = system.wiring();
+    let geometry = wiring.motor_control().geometry();
+    let physics = wiring.physics().physics();
+    let placed = system.mission().start().is_some() || system.is_driving();
+    placed.then(|| Ghost {
+        robot: RobotView {
+            pose: physics.pose(),
+            body_radius: geometry.radius_of_body_area,
+            axle_length: geometry.drive.axle_length(),
+            wheel_radius: geometry.drive.radius_left(),
+            bumped: physics.state().in_contact,
+        },
+        trail: system.record().trail(),
+    })
+}
+
 /// The caption under the picture: simulated time and what the robot is doing.
 pub fn caption(system: &System) -> String {
     format!("t = {:.1} s  {}", system.time(), system.status())
@@ -114,6 +133,7 @@ pub fn scene_of<'a>(
         local_target,
         robot: placed.then_some(robot),
         trail: system.record().trail(),
+        ghost: None,
         start: mission.start(),
         goal: mission.goal(),
         // The direction LocalPathPlanning drives in; once arrived nothing drives, and the

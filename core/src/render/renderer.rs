@@ -11,7 +11,7 @@ use tiny_skia::Pixmap;
 use super::colour::Rgba;
 use super::draw::{self, Px};
 use super::frame::Frame;
-use super::of_system::{FieldBuffers, scene_of};
+use super::of_system::{FieldBuffers, ghost_of, scene_of};
 use super::panel::{self, PanelInput, TextArea};
 use super::raster::{Base, Heat, LogBins, draw_map, fill_rect, viridis};
 use super::scene::{Layers, Scene};
@@ -242,6 +242,30 @@ impl Renderer {
         result.map(|()| &self.frame)
     }
 
+    /// Draws `system` as [`Renderer::render_system`] does, with `ghost`'s robot and trail
+    /// over it ([`ghost_of`]: the compare view, run B as the ghost).
+    pub fn render_compare(
+        &mut self,
+        system: &System,
+        ghost: &System,
+        caption: &str,
+        layers: Layers,
+    ) -> Result<&Frame, RenderError> {
+        let mut buffers = core::mem::take(&mut self.field_buffers);
+        let result = match scene_of(system, &mut buffers, caption, layers) {
+            Some(scene) => {
+                let scene = Scene {
+                    ghost: ghost_of(ghost),
+                    ..scene
+                };
+                self.render(&scene).map(|_| ())
+            }
+            None => Err(RenderError::NoMap),
+        };
+        self.field_buffers = buffers;
+        result.map(|()| &self.frame)
+    }
+
     /// Draws `scene` and returns the frame. A scene with a non-finite number, a negative
     /// size or `dmin`, a path cell outside the map, per-cell arrays of the wrong length or
     /// (when the heat map is shown and its field is new) a reached cell without a positive
@@ -358,6 +382,13 @@ impl Renderer {
             draw::polyline(pm, &pts, 3.0 * u, style::HALO);
             draw::polyline(pm, &pts, 1.75 * u, style::TRAIL);
         }
+        // The ghost's trail, dashed by its own colour, under the robot's.
+        if let Some(g) = scene.ghost.filter(|g| layers.trail && g.trail.len() >= 2) {
+            let pts = draw::decimate(g.trail.iter().map(|&(x, y)| to_f32(px(x, y))));
+            let pts = draw::simplify(&pts, SIMPLIFY);
+            draw::polyline(pm, &pts, 3.0 * u, style::HALO);
+            draw::polyline(pm, &pts, 1.75 * u, style::GHOST);
+        }
         if layers.control_points && !scene.control_points.is_empty() {
             let pts: Vec<Px> = scene
                 .control_points
@@ -380,6 +411,15 @@ impl Renderer {
         }
         if let Some(p) = scene.local_target.filter(|_| layers.local_target) {
             panel::target_marker(pm, px(p.x, p.y), draw::heading(p.theta), u);
+        }
+        if let Some(g) = scene.ghost.filter(|_| layers.robot) {
+            let s = view.pixels_per_metre();
+            let body = (g.robot.body_radius * s).max(5.0 * uf);
+            let c = px(g.robot.pose.x, g.robot.pose.y);
+            let d = draw::heading(g.robot.pose.theta);
+            draw::disc(pm, to_f32(c), body as f32, style::GHOST.with_alpha(70));
+            let tip = (c.0 + d.0 * body, c.1 + d.1 * body);
+            draw::polyline(pm, &[to_f32(c), to_f32(tip)], 2.5 * u, style::GHOST);
         }
         if let Some(r) = scene.robot.filter(|_| layers.robot) {
             let s = view.pixels_per_metre();

@@ -137,6 +137,15 @@ impl Default for Layers {
     }
 }
 
+/// A second robot drawn faintly over the scene, with its trail: the compare view's run B.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ghost<'a> {
+    /// Where it is, its size.
+    pub robot: RobotView,
+    /// Its past positions, metres, oldest first.
+    pub trail: &'a [(f64, f64)],
+}
+
 /// Everything one frame shows, borrowed from its owners. Empty slices and `None` draw
 /// nothing. Build one with [`Scene::new`] and struct update syntax.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -163,6 +172,8 @@ pub struct Scene<'a> {
     pub robot: Option<RobotView>,
     /// Past robot positions, metres, oldest first.
     pub trail: &'a [(f64, f64)],
+    /// A second robot drawn as a ghost (drawn with the robot and trail layers).
+    pub ghost: Option<Ghost<'a>>,
     /// The start pose of `SetPosition`.
     pub start: Option<Pose>,
     /// The goal pose of `SetPosition`.
@@ -190,6 +201,7 @@ impl<'a> Scene<'a> {
             local_target: None,
             robot: None,
             trail: &[],
+            ghost: None,
             start: None,
             goal: None,
             direction: Direction::Forward,
@@ -243,6 +255,21 @@ impl<'a> Scene<'a> {
         }
         check_points("control_points", self.control_points)?;
         check_points("trail", self.trail)?;
+        if let Some(g) = &self.ghost {
+            check_points("ghost.trail", g.trail)?;
+            check_pose(
+                ["ghost.pose.x", "ghost.pose.y", "ghost.pose.theta"],
+                &g.robot.pose,
+            )?;
+            let r = g.robot.body_radius;
+            check(
+                "ghost.body_radius",
+                None,
+                r,
+                r.is_finite() && r >= 0.0,
+                FINITE_NON_NEGATIVE,
+            )?;
+        }
         if let Some(p) = &self.local_target {
             check_pose(
                 ["local_target.x", "local_target.y", "local_target.theta"],

@@ -42,6 +42,8 @@ pub(crate) const ROBOT_BUMP: Rgba = Rgba::rgb(220, 38, 38);
 pub(crate) const WHEEL: Rgba = Rgba::rgb(17, 17, 17);
 /// Trail.
 pub(crate) const TRAIL: Rgba = Rgba::rgb(13, 148, 136).with_alpha(210);
+/// The ghost robot and its trail (the compare view's run B).
+pub(crate) const GHOST: Rgba = Rgba::rgb(124, 58, 237).with_alpha(220);
 /// Start arrow.
 pub(crate) const START: Rgba = Rgba::rgb(22, 163, 74);
 /// Goal arrow.

@@ -81,6 +81,13 @@ pub trait Component: Any {
     /// The instance name (e.g. `LocalPathPlanning0`).
     fn instance_name(&self) -> &str;
 
+    /// A copy of this component in the state it is in (its ports unconnected: see
+    /// [`super::OutPort`]'s `Clone`), for a system's checkpoints; `None` (the default) for a
+    /// component that cannot be copied.
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        None
+    }
+
     /// This component's configuration, if it has parameters (spec §1 "Configuration
     /// parameters"). The context applies `on_activation` parameters just before
     /// [`Component::on_activated`].

@@ -143,6 +143,33 @@ impl ExecutionContext {
         })
     }
 
+    /// A copy in the same state (every component copied with
+    /// [`Component::boxed_clone`]; their ports unconnected). `None` if a component cannot
+    /// be copied or a sample injected into a port is still waiting for its component.
+    pub fn try_clone(&self) -> Option<Self> {
+        let mut slots = Vec::with_capacity(self.slots.len());
+        for s in &self.slots {
+            if !s.injections.is_empty() {
+                return None;
+            }
+            slots.push(Slot {
+                component: s.component.boxed_clone()?,
+                state: s.state,
+                period_ticks: s.period_ticks,
+                fault: s.fault.clone(),
+                injections: Vec::new(),
+                last_error: s.last_error.clone(),
+            });
+        }
+        Some(Self {
+            base_period_ns: self.base_period_ns,
+            state: self.state,
+            next_tick: self.next_tick,
+            slots,
+            events: self.events.clone(),
+        })
+    }
+
     /// The base period in nanoseconds.
     pub fn base_period_ns(&self) -> u64 {
         self.base_period_ns

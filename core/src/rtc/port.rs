@@ -72,6 +72,33 @@ impl<T: Clone> InPort<T> {
     }
 }
 
+impl<T: Clone> InPort<T> {
+    /// The same port (not a copy): what an [`OutPort`] is connected to when a copied system
+    /// is connected again ([`OutPort::connect`] takes it by reference).
+    pub(crate) fn share(&self) -> Self {
+        Self {
+            name: self.name,
+            slot: Rc::clone(&self.slot),
+        }
+    }
+}
+
+/// A copy is a port of its own holding the same value and `isNew()` flag; it is connected
+/// to nothing until its owner connects it (a copied system connects its ports as the
+/// original was connected).
+impl<T: Clone> Clone for InPort<T> {
+    fn clone(&self) -> Self {
+        let s = self.slot.borrow();
+        Self {
+            name: self.name,
+            slot: Rc::new(RefCell::new(Slot {
+                value: s.value.clone(),
+                new: s.new,
+            })),
+        }
+    }
+}
+
 impl<T> fmt::Debug for InPort<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("InPort")
@@ -139,6 +166,20 @@ impl<T: Clone> OutPort<T> {
     }
 }
 
+/// A copy keeps the last value and the write count but is connected to nothing: the owner of
+/// the copied components connects them again (a copy must not write into the original's
+/// ports).
+impl<T: Clone> Clone for OutPort<T> {
+    fn clone(&self) -> Self {
+        Self {
+            name: self.name,
+            connections: Vec::new(),
+            last: self.last.clone(),
+            writes: self.writes,
+        }
+    }
+}
+
 impl<T> fmt::Debug for OutPort<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("OutPort")
@@ -175,5 +216,24 @@ mod tests {
         a.clear();
         assert!(!a.is_new());
         assert_eq!(a.read(), None);
+    }
+
+    #[test]
+    fn copies_are_unconnected_and_hold_their_own_value() {
+        let mut out = OutPort::new("Out");
+        let a = InPort::new("A");
+        out.connect(&a);
+        out.write(1);
+        let a2 = a.clone();
+        let mut out2 = out.clone();
+        assert_eq!(out2.connection_count(), 0);
+        assert_eq!(out2.last(), Some(&1));
+        assert!(a2.is_new());
+        out.write(2);
+        assert_eq!(a2.read(), Some(1));
+        out2.connect(&a2);
+        out2.write(3);
+        assert_eq!(a.read(), Some(2));
+        assert_eq!(a2.read(), Some(3));
     }
 }

@@ -124,6 +124,12 @@ pub enum SessionError {
         /// Why.
         reason: String,
     },
+    /// A replay file that cannot be used (`crate::system::Replay`).
+    #[error("replay: {reason}")]
+    BadReplay {
+        /// Why.
+        reason: String,
+    },
     /// A clock speed outside the range offered.
     #[error("speed {speed}× is outside {min}× to {max}×")]
     BadSpeed {

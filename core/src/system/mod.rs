@@ -13,7 +13,10 @@
 //! | [`Timeline`] (`timeline.rs`) | a scenario's timed events, counted from the drive's start | — |
 //! | [`setup::build`] (`setup.rs`) | the one set-up builder (runner, renderer, page, tests) | — |
 //! | [`ScenarioRun`] (`runner.rs`) | a headless run to its outcome | — |
-//! | [`Session`] (`session.rs`) | the user interface's one boundary: clock, set-up record, share links, read-outs | — |
+//! | [`Comparison`] (`compare.rs`) | one scenario run with two set-ups, side by side | — |
+//! | [`Session`] (`session.rs`, `session_replay.rs`) | the user interface's one boundary: clock, set-up record, share links, read-outs, replays and seeking | — |
+//! | [`Replay`] (`replay.rs`) | a recorded run as a versioned JSON file: set-up and timed [`Input`]s, exact numbers | — |
+//! | `History` (`history.rs`) | a session's recorded inputs, checkpoints and timeline marks | — |
 //!
 //! # Wiring (spec §0)
 //!
@@ -63,15 +66,18 @@
 //! goes to Error (the robot stands still), MotorControl gets `Stop`; `Input::ResetAll`
 //! brings every component back to Inactive.
 
+mod compare;
 mod conf_bundle;
 mod error;
 mod events;
+mod history;
 mod input;
 mod inspect;
 mod kind;
 mod mission;
 mod rates;
 mod record;
+mod replay;
 mod robot;
 mod runner;
 mod scenario;
@@ -82,15 +88,20 @@ mod telemetry;
 mod timeline;
 mod wiring;
 
+pub use compare::{ComparePlots, Comparison, RunSummary, compare, setup_with};
 pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
+pub use history::{
+    CHECKPOINT_NS, CHECKPOINT_SAMPLES, MAX_CHECKPOINTS, Mark, MarkKind, TimelineView,
+};
 pub use input::Input;
 pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;
 pub use mission::Mission;
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
+pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use robot::System;
 pub use runner::{
     ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,
@@ -103,7 +114,7 @@ pub use scenario::{
 };
 pub use session::{
     ComponentParameters, MAX_PLOT_SECONDS, MAX_SPEED, MAX_STEP_MS, MIN_SPEED, ParameterView,
-    PlotWindow, Session, TOKEN_INFLATE_LIMIT, TUNABLE,
+    PlotWindow, ReplayCheck, Session, TOKEN_INFLATE_LIMIT, TUNABLE,
 };
 pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
 pub use status::{ComponentInfo, STILL, Status, SystemState};

@@ -224,6 +224,11 @@ impl Record {
         self.telemetry.set_capacity(capacity)
     }
 
+    /// Keeps only the newest `keep` telemetry samples.
+    pub(super) fn trim_telemetry(&mut self, keep: usize) {
+        self.telemetry.trim(keep);
+    }
+
     /// Samples telemetry every `period_ticks` base ticks.
     pub(super) fn set_telemetry_period(&mut self, period_ticks: u64) {
         self.telemetry_period_ticks = period_ticks.max(1);

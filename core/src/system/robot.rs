@@ -72,6 +72,24 @@ impl System {
         Ok(system)
     }
 
+    /// A copy in the same state that shares nothing with this one (a replay's checkpoint):
+    /// stepped with the same inputs, the two stay identical bit for bit. `None` while an
+    /// injected sample waits for its component ([`Wiring::try_clone`]).
+    pub fn try_clone(&self) -> Option<Self> {
+        Some(Self {
+            wiring: self.wiring.try_clone()?,
+            mission: self.mission.clone(),
+            record: self.record.clone(),
+            rates: self.rates,
+        })
+    }
+
+    /// Keeps only the newest `keep` telemetry samples (a checkpoint's copy; the trace hash
+    /// goes on over every sample).
+    pub(super) fn trim_telemetry(&mut self, keep: usize) {
+        self.record.trim_telemetry(keep);
+    }
+
     // ------------------------------------------------------------------ inputs
 
     /// Carries out one request (the one interpreter of [`Input`]). Refused requests return

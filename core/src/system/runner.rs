@@ -258,6 +258,11 @@ impl ScenarioRun {
         &self.system
     }
 
+    /// The system, the run left behind.
+    pub fn into_system(self) -> System {
+        self.system
+    }
+
     /// The outcome, once the run has ended.
     pub fn outcome(&self) -> Option<&Outcome> {
         self.outcome.as_ref()

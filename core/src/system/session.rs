@@ -18,6 +18,10 @@
 //!   the planners have settled, so the drawing follows even while paused.
 //! - **Read-outs for people**: new events since the last look, the parameter panel's view,
 //!   the plot window, the status.
+//! - **Its history** ([`History`], `session_replay.rs`): the set-up and every request
+//!   carried out with its time — a [`Replay`] to download or to load — checkpoints to seek
+//!   back and forth in time, and the timeline's marks. Recorded requests after the time
+//!   reached are replayed as time advances; a request made there drops them.
 
 use std::collections::BTreeMap;
 
@@ -26,6 +30,7 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
 use super::events::SystemEvent;
+use super::history::History;
 use super::input::Input;
 use super::kind::ComponentKind;
 use super::rates::Rates;
@@ -39,6 +44,13 @@ use crate::errors::SessionError;
 use crate::interfaces::Direction;
 use crate::map::{GridMap, MapUpdate};
 use crate::rtc::LifecycleState;
+
+#[path = "session_replay.rs"]
+mod session_replay;
+pub use session_replay::ReplayCheck;
+
+/// Where a refused request of a replay is said to come from in the log.
+const REPLAY_SOURCE: &str = "the replay";
 
 /// The most wall time one [`Session::advance`] turns into simulated time \[ms\]: a tab that
 /// was in the background resumes where it was instead of catching up in one frame.
@@ -188,6 +200,8 @@ pub struct Session {
     map_name: String,
     /// Events handed out so far ([`Session::new_events`]).
     events_seen: u64,
+    /// The run's history (a scenario's; `None` for a map file).
+    history: Option<History>,
 }
 
 /// Every [`TUNABLE`] parameter's requested value, by component and name.
@@ -235,6 +249,7 @@ impl Session {
             edits: BTreeMap::new(),
             map_name: String::new(),
             events_seen: 0,
+            history: None,
         })
     }
 
@@ -320,6 +335,14 @@ impl Session {
         self.clock.pending_ns = 0;
         self.edits.clear();
         self.events_seen = 0;
+        self.history = self.scenario().map(Setup::of).map(|setup| {
+            History::new(
+                setup,
+                (&self.system, &self.timeline, &self.edits),
+                Vec::new(),
+                0,
+            )
+        });
     }
 
     // ------------------------------------------------------------------ set-up and sharing
@@ -437,6 +460,12 @@ impl Session {
         self.clock.pending_ns = 0;
         self.events_seen = 0;
         self.edits = setup.edits.iter().map(|&(x, y, v)| ((x, y), v)).collect();
+        self.history = Some(History::new(
+            setup.clone(),
+            (&self.system, &self.timeline, &self.edits),
+            Vec::new(),
+            0,
+        ));
         Ok(())
     }
 
@@ -458,13 +487,50 @@ impl Session {
         let base = self.system.wiring().execution_context().base_period_ns();
         let ticks = self.clock.pending_ns / base;
         self.clock.pending_ns %= base;
-        self.timeline.run(&mut self.system, ticks);
+        self.step_ticks(ticks);
         ticks
     }
 
     /// Runs `ticks` base ticks now, paused or not (single step).
     pub fn step_ticks(&mut self, ticks: u64) {
-        self.timeline.run(&mut self.system, ticks);
+        let base = self.system.wiring().execution_context().base_period_ns();
+        let target = self
+            .system
+            .time_ns()
+            .saturating_add(ticks.saturating_mul(base));
+        self.run_to(target);
+    }
+
+    /// Runs to simulated time `target_ns` (a whole number of base ticks; later if a request
+    /// replayed on the way plans past it): the scenario's timeline, the requests recorded
+    /// for the times passed, checkpoints and marks ([`History`]).
+    fn run_to(&mut self, target_ns: u64) {
+        let base = self.system.wiring().execution_context().base_period_ns();
+        loop {
+            let now = self.system.time_ns();
+            while let Some(input) = self.history.as_mut().and_then(|h| h.take_due(now)) {
+                if self.carry_out(&input, false).is_err() {
+                    // Refused, nothing changed: refused again, and logged.
+                    self.system.apply_logged(&input, REPLAY_SOURCE);
+                }
+            }
+            let now = self.system.time_ns();
+            let mut stop = target_ns;
+            if let Some(h) = &mut self.history {
+                if h.wants_checkpoint(now) {
+                    h.checkpoint(&self.system, &self.timeline, &self.edits);
+                }
+                stop = stop.min(h.next_stop(now));
+            }
+            if now >= target_ns {
+                break;
+            }
+            let ticks = stop.saturating_sub(now).div_ceil(base).max(1);
+            self.timeline.run(&mut self.system, ticks);
+            if let Some(h) = &mut self.history {
+                h.collect_marks(self.system.record(), self.system.time_ns());
+            }
+        }
     }
 
     /// Pauses or resumes the clock.
@@ -506,16 +572,26 @@ impl Session {
     /// only if its value changes; an edit that changes nothing sends nothing (no update, no
     /// log line, no plan).
     pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
+        self.carry_out(input, true)
+    }
+
+    /// [`Session::apply`]; a request carried out is recorded in the history if `record`
+    /// (a person's), not when it is one replayed from it.
+    fn carry_out(&mut self, input: &Input, record: bool) -> crate::Result<()> {
         if let (Input::MapUpdate { cells }, Some(map)) = (input, self.system.map()) {
             let net = MapUpdate::net_changes(cells, map);
             if net.is_empty() {
                 return Ok(());
             }
             if net.len() != cells.len() {
-                return self.apply(&Input::MapUpdate { cells: net });
+                return self.carry_out(&Input::MapUpdate { cells: net }, record);
             }
         }
+        let t_ns = self.system.time_ns();
         self.system.apply(input)?;
+        if let (true, Some(h)) = (record, &mut self.history) {
+            h.record(t_ns, input.clone());
+        }
         let replans = match input {
             Input::MapUpdate { cells } => {
                 for &(x, y, v) in cells {

@@ -170,6 +170,14 @@ impl Telemetry {
         Ok(())
     }
 
+    /// Drops all but the newest `keep` samples now (the capacity stays; the hash and the
+    /// count go on).
+    pub(super) fn trim(&mut self, keep: usize) {
+        let drop = self.samples.len().saturating_sub(keep);
+        self.samples.drain(..drop);
+        self.samples.shrink_to_fit();
+    }
+
     /// How many samples are kept.
     pub fn capacity(&self) -> usize {
         self.capacity

@@ -38,7 +38,7 @@ pub struct Report {
 
 /// The system's end of the ports whose data becomes a service call or a fact (spec §0's
 /// service arrows): read after every tick and after every request.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 struct Bridges {
     set_map: InPort<SetMapMessage>,
     map_update: InPort<MapUpdate>,
@@ -88,9 +88,8 @@ impl Wiring {
     /// the physics' `on_execute`, which puts it in Error.
     pub fn new(rates: Rates) -> crate::Result<Self> {
         let frame = ModelFrame::RH0;
-        let mut map_builder = MapBuilder::new(ComponentKind::MapBuilder.instance_name());
-        let mut map_maintenance =
-            MapMaintenance::new(ComponentKind::MapMaintenance.instance_name());
+        let map_builder = MapBuilder::new(ComponentKind::MapBuilder.instance_name());
+        let map_maintenance = MapMaintenance::new(ComponentKind::MapMaintenance.instance_name());
         let mut physics = PhysicsSim::new(
             ComponentKind::PhysicsSim.instance_name(),
             PhysicsParams::default().with_model_frame(frame),
@@ -104,31 +103,10 @@ impl Wiring {
             .set("SimulatedOffsetAngle", frame.offset_angle)?;
         // The robot model's own values, not a change waiting for an activation.
         motor.config_mut().apply_on_activation();
-        let mut localization = Localization::new(ComponentKind::Localization.instance_name());
-        let mut global = GlobalPathPlanning::new(ComponentKind::GlobalPathPlanning.instance_name());
-        let mut local = LocalPathPlanning::new(ComponentKind::LocalPathPlanning.instance_name());
-        let mut drive = DriveControl::new(ComponentKind::DriveControl.instance_name());
-
-        // Data ports (spec §0).
-        physics.angle.connect(&motor.in_current_wheel_angle);
-        physics.position.connect(&motor.in_simulated_position);
-        motor.torque.connect(&physics.torque);
-        motor
-            .out_current_wheel_angle
-            .connect(&localization.in_current_wheel_angle);
-        motor
-            .out_simulated_position_to_localization
-            .connect(&localization.in_simulated_position);
-        for port in [
-            &local.in_current_position,
-            &drive.in_current_position,
-            &global.in_current_position,
-        ] {
-            localization.out_current_position.connect(port);
-        }
-        drive.target_velocity.connect(&motor.target_velocity);
-        drive.out_deviating.connect(&local.in_deviating);
-        local.drive_cons.connect(&drive.in_control_points);
+        let localization = Localization::new(ComponentKind::Localization.instance_name());
+        let global = GlobalPathPlanning::new(ComponentKind::GlobalPathPlanning.instance_name());
+        let local = LocalPathPlanning::new(ComponentKind::LocalPathPlanning.instance_name());
+        let drive = DriveControl::new(ComponentKind::DriveControl.instance_name());
 
         // The system's ends: service calls and facts.
         let rx = Bridges {
@@ -141,14 +119,6 @@ impl Wiring {
             bump: InPort::new("BumpDetection"),
             safety_stop: InPort::new("SafetyStop"),
         };
-        map_builder.set_map.connect(&rx.set_map);
-        map_maintenance.map_update_out.connect(&rx.map_update);
-        global.global_path_course.connect(&rx.global_path);
-        global.planning_failure.connect(&rx.global_failure);
-        local.invent_gui_cons.connect(&rx.local_path);
-        local.invent_gui_failure.connect(&rx.local_failure);
-        physics.bump.connect(&rx.bump);
-        drive.safety_stop.connect(&rx.safety_stop);
 
         let mut ec = ExecutionContext::new(rates.base())?;
         let boxes: [Box<dyn Component>; 8] = [
@@ -174,9 +144,66 @@ impl Wiring {
             facts: Vec::new(),
             clearance_checked: None,
         };
+        wiring.connect();
         wiring.drain_lifecycle_events();
         wiring.tell_body_radius();
         Ok(wiring)
+    }
+
+    /// Connects the data ports of spec §0 and the system's bridges (the tables in
+    /// `crate::system`): once when the wiring is made, and again in a copy
+    /// ([`Wiring::try_clone`]), whose copied ports are connected to nothing.
+    fn connect(&mut self) {
+        use ComponentKind as K;
+        macro_rules! link {
+            ($from:ty, $fk:expr, $out:ident => $to:ty, $tk:expr, $inp:ident) => {{
+                let port = self.get::<$to>($tk).$inp.share();
+                self.get_mut::<$from>($fk).$out.connect(&port);
+            }};
+        }
+        macro_rules! bridge {
+            ($from:ty, $fk:expr, $out:ident => $rx:ident) => {{
+                let port = self.rx.$rx.share();
+                self.get_mut::<$from>($fk).$out.connect(&port);
+            }};
+        }
+        // Data ports (spec §0).
+        link!(PhysicsSim, K::PhysicsSim, angle => MotorControl, K::MotorControl, in_current_wheel_angle);
+        link!(PhysicsSim, K::PhysicsSim, position => MotorControl, K::MotorControl, in_simulated_position);
+        link!(MotorControl, K::MotorControl, torque => PhysicsSim, K::PhysicsSim, torque);
+        link!(MotorControl, K::MotorControl, out_current_wheel_angle => Localization, K::Localization, in_current_wheel_angle);
+        link!(MotorControl, K::MotorControl, out_simulated_position_to_localization => Localization, K::Localization, in_simulated_position);
+        link!(Localization, K::Localization, out_current_position => LocalPathPlanning, K::LocalPathPlanning, in_current_position);
+        link!(Localization, K::Localization, out_current_position => DriveControl, K::DriveControl, in_current_position);
+        link!(Localization, K::Localization, out_current_position => GlobalPathPlanning, K::GlobalPathPlanning, in_current_position);
+        link!(DriveControl, K::DriveControl, target_velocity => MotorControl, K::MotorControl, target_velocity);
+        link!(DriveControl, K::DriveControl, out_deviating => LocalPathPlanning, K::LocalPathPlanning, in_deviating);
+        link!(LocalPathPlanning, K::LocalPathPlanning, drive_cons => DriveControl, K::DriveControl, in_control_points);
+        // The system's ends: service calls and facts.
+        bridge!(MapBuilder, K::MapBuilder, set_map => set_map);
+        bridge!(MapMaintenance, K::MapMaintenance, map_update_out => map_update);
+        bridge!(GlobalPathPlanning, K::GlobalPathPlanning, global_path_course => global_path);
+        bridge!(GlobalPathPlanning, K::GlobalPathPlanning, planning_failure => global_failure);
+        bridge!(LocalPathPlanning, K::LocalPathPlanning, invent_gui_cons => local_path);
+        bridge!(LocalPathPlanning, K::LocalPathPlanning, invent_gui_failure => local_failure);
+        bridge!(PhysicsSim, K::PhysicsSim, bump => bump);
+        bridge!(DriveControl, K::DriveControl, safety_stop => safety_stop);
+    }
+
+    /// A copy in the same state, connected as this one is, sharing nothing with it (a
+    /// checkpoint of a replay). `None` while a sample injected into a port waits for its
+    /// component's next execution (it cannot be copied): a tick later it can be.
+    pub fn try_clone(&self) -> Option<Self> {
+        let mut copy = Self {
+            ec: self.ec.try_clone()?,
+            rx: self.rx.clone(),
+            map_loads: self.map_loads,
+            map_updates: self.map_updates,
+            facts: self.facts.clone(),
+            clearance_checked: self.clearance_checked,
+        };
+        copy.connect();
+        Some(copy)
     }
 
     // ------------------------------------------------------------------ components

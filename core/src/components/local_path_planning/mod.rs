@@ -81,7 +81,7 @@ struct Sent {
 }
 
 /// The LocalPathPlanning RT-component (seed 000).
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct LocalPathPlanning {
     name: String,
     config: Configuration<LocalPathPlanningParams>,
@@ -697,6 +697,10 @@ fn plan_params(params: &LocalPathPlanningParams) -> PlanParams {
 }
 
 impl Component for LocalPathPlanning {
+    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
+        Some(Box::new(self.clone()))
+    }
+
     fn instance_name(&self) -> &str {
         &self.name
     }

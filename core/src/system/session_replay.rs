@@ -1,0 +1,122 @@
+//! The session's replays and its moves in time (a child of `session.rs`; see its module
+//! documentation and [`History`]).
+
+use serde::Serialize;
+
+use super::super::history::{History, TimelineView};
+use super::super::replay::Replay;
+use super::Session;
+use crate::errors::SessionError;
+
+/// What loading a replay found: whether the run reproduced the recorded trace.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct ReplayCheck {
+    /// The scenario.
+    pub scenario: String,
+    /// The recorded end \[ns\].
+    pub end_ns: u64,
+    /// Requests replayed.
+    pub inputs: usize,
+    /// The trace hash recorded in the file.
+    pub expected_hash: String,
+    /// The trace hash of the run replayed.
+    pub hash: String,
+    /// Telemetry samples recorded in the file.
+    pub expected_samples: u64,
+    /// Telemetry samples of the run replayed.
+    pub samples: u64,
+    /// Whether the two runs are the same (hash and samples).
+    pub matches: bool,
+}
+
+fn bad(reason: &str) -> crate::Error {
+    SessionError::BadReplay {
+        reason: reason.to_owned(),
+    }
+    .into()
+}
+
+fn no_history() -> crate::Error {
+    bad("a replay needs a scenario; this map was loaded from a file")
+}
+
+impl Session {
+    /// The run so far as a replay: the set-up it started from and every request carried
+    /// out up to now (not those recorded after now). An error when the map was loaded from
+    /// a file.
+    pub fn replay(&self) -> crate::Result<Replay> {
+        let history = self.history.as_ref().ok_or_else(no_history)?;
+        Ok(history.replay(&self.system))
+    }
+
+    /// [`Session::replay`] as the file's JSON text.
+    pub fn replay_json(&self) -> crate::Result<String> {
+        self.replay()?.to_json()
+    }
+
+    /// Loads `replay` on the scenario loaded (it must be the replay's scenario): the set-up
+    /// is rebuilt and run to the recorded end with every request at its time (checkpoints
+    /// and marks taken on the way); the session stands there, paused or not as it was.
+    /// Returns whether the trace hash is the recorded one. On an error nothing changes.
+    pub fn load_replay(&mut self, replay: &Replay) -> crate::Result<ReplayCheck> {
+        if self.scenario().is_none() {
+            return Err(no_history());
+        }
+        self.restart_setup(&replay.setup).map_err(|e| match e {
+            crate::Error::Session(SessionError::BadShareToken { reason }) => {
+                SessionError::BadReplay { reason }.into()
+            }
+            e => e,
+        })?;
+        self.history = Some(History::new(
+            replay.setup.clone(),
+            (&self.system, &self.timeline, &self.edits),
+            replay.inputs.clone(),
+            replay.end_ns,
+        ));
+        self.run_to(replay.end_ns);
+        let telemetry = self.system.record().telemetry();
+        let hash = telemetry.trace_hash();
+        let samples = telemetry.total();
+        Ok(ReplayCheck {
+            scenario: replay.setup.scenario.clone(),
+            end_ns: replay.end_ns,
+            inputs: replay.inputs.len(),
+            matches: hash == replay.trace_hash && samples == replay.samples,
+            expected_hash: replay.trace_hash.clone(),
+            hash,
+            expected_samples: replay.samples,
+            samples,
+        })
+    }
+
+    /// Moves to simulated time `t_ns` (rounded up to a whole base tick), back or forth:
+    /// from the nearest checkpoint at or before it (or from now, if that is nearer), with
+    /// the recorded requests replayed on the way. The event log starts again from the
+    /// events kept then ([`Session::new_events`] hands them all out).
+    pub fn seek(&mut self, t_ns: u64) -> crate::Result<()> {
+        let base = self.system.wiring().execution_context().base_period_ns();
+        let target = t_ns.div_ceil(base).saturating_mul(base);
+        let now = self.system.time_ns();
+        let history = self.history.as_mut().ok_or_else(no_history)?;
+        let nearer = history.checkpoint_before(target).is_some_and(|at| at > now);
+        if target < now || nearer {
+            let state = history
+                .restore(target)
+                .ok_or_else(|| bad("no checkpoint to go back to"))?;
+            self.system = state.system;
+            self.timeline = state.timeline;
+            self.edits = state.edits;
+            self.events_seen = 0;
+            self.clock.pending_ns = 0;
+        }
+        self.run_to(target);
+        Ok(())
+    }
+
+    /// The timeline's read-out: where the history starts and ends, now, the marks.
+    pub fn timeline_view(&self) -> crate::Result<TimelineView> {
+        let history = self.history.as_ref().ok_or_else(no_history)?;
+        Ok(history.view(self.system.time_ns()))
+    }
+}
