@@ -19,6 +19,8 @@ import { createParamsPanel } from './js/panels/params.js';
 import { createInspector } from './js/panels/inspector.js';
 import { createPlots } from './js/panels/plots.js';
 import { createShare } from './js/panels/share.js';
+import { createTimeline } from './js/panels/timeline.js';
+import { createCompare } from './js/compare.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -72,6 +74,9 @@ async function boot() {
       description: $('about-description'), lesson: $('about-lesson') },
     app,
   );
+  app.scenarios = scenarios;
+  const timeline = createTimeline($('timeline'), app);
+  const compare = createCompare($('params-panel'), $('compare-view'), app);
   const simTime = $('sim-time');
 
   const frameTimes = [];
@@ -89,6 +94,7 @@ async function boot() {
     rtc.update(components);
     app.log.update();
     telemetry.update();
+    timeline.update();
     toolbar.update();
     legend.update(app.stage.robotBox);
     app.notice.update(app.stage.robotBox);
@@ -108,6 +114,8 @@ async function boot() {
     scenarios,
     tabs,
     inspector,
+    timeline,
+    compare,
     /** Frame times (step + render + blit) of the last frames, ms. */
     frameTimes: () => frameTimes.slice(),
     clearFrameTimes: () => { frameTimes.length = 0; },

@@ -11,7 +11,9 @@
 //!
 //! Checkpoints are taken every [`CHECKPOINT_NS`] of simulated time; past
 //! [`MAX_CHECKPOINTS`] every other one is dropped and the spacing doubles, so a long run
-//! keeps a bounded number (a 5-minute run: checkpoints 8 s apart at most).
+//! keeps a bounded number (a 5-minute run: checkpoints 8 s apart at most). A copy of the
+//! system holds its map's per-cell data several times over, so a large map keeps fewer:
+//! at most [`CHECKPOINT_CELLS`] map cells in all, and never fewer than 4 checkpoints.
 
 use std::collections::BTreeMap;
 
@@ -29,6 +31,8 @@ use super::timeline::Timeline;
 pub const CHECKPOINT_NS: u64 = 2_000_000_000;
 /// The most checkpoints kept (past it, every other one is dropped).
 pub const MAX_CHECKPOINTS: usize = 40;
+/// The most map cells all checkpoints hold together (the memory bound on large maps).
+pub const CHECKPOINT_CELLS: usize = 12_000_000;
 
 /// What a mark on the timeline stands for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -145,6 +149,8 @@ pub(super) struct History {
     inputs: Vec<TimedInput>,
     next: usize,
     checkpoints: Vec<Checkpoint>,
+    /// The most checkpoints kept for this map.
+    max_checkpoints: usize,
     interval_ns: u64,
     marks: Vec<Mark>,
     /// Every event before this time is marked, none after.
@@ -170,6 +176,9 @@ impl History {
             inputs,
             next: 0,
             checkpoints: Vec::new(),
+            max_checkpoints: system.map().map_or(MAX_CHECKPOINTS, |m| {
+                (CHECKPOINT_CELLS / (m.width() * m.height()).max(1)).clamp(4, MAX_CHECKPOINTS)
+            }),
             interval_ns: CHECKPOINT_NS,
             marks: Vec::new(),
             horizon_ns: now,
@@ -233,7 +242,7 @@ impl History {
             next: self.next,
             state: copy,
         });
-        if self.checkpoints.len() > MAX_CHECKPOINTS {
+        if self.checkpoints.len() > self.max_checkpoints {
             let mut i = 0;
             self.checkpoints.retain(|_| {
                 i += 1;

@@ -93,7 +93,8 @@ pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
 pub use history::{
-    CHECKPOINT_NS, CHECKPOINT_SAMPLES, MAX_CHECKPOINTS, Mark, MarkKind, TimelineView,
+    CHECKPOINT_CELLS, CHECKPOINT_NS, CHECKPOINT_SAMPLES, MAX_CHECKPOINTS, Mark, MarkKind,
+    TimelineView,
 };
 pub use input::Input;
 pub use inspect::{CellInspection, FieldInspection, ParentInspection};

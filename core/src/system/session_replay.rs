@@ -3,9 +3,11 @@
 
 use serde::Serialize;
 
+use super::super::compare::{Comparison, compare};
 use super::super::history::{History, TimelineView};
+use super::super::kind::ComponentKind;
 use super::super::replay::Replay;
-use super::Session;
+use super::{Session, Source};
 use crate::errors::SessionError;
 
 /// What loading a replay found: whether the run reproduced the recorded trace.
@@ -118,5 +120,40 @@ impl Session {
     pub fn timeline_view(&self) -> crate::Result<TimelineView> {
         let history = self.history.as_ref().ok_or_else(no_history)?;
         Ok(history.view(self.system.time_ns()))
+    }
+
+    /// The scenario run from the activation to its outcome twice, side by side: with the
+    /// current set-up ([`Session::setup`]: start, goal, map edits, changed parameters) as
+    /// run A, and with `component`'s parameter `name` set to `text` (parsed by its
+    /// declaration) as run B (the page's "compare with…"). The session does not change.
+    pub fn compare_with(
+        &self,
+        component: ComponentKind,
+        name: &str,
+        text: &str,
+    ) -> crate::Result<Comparison> {
+        let Source::Scenario { scenario, files } = &self.source else {
+            return Err(bad(
+                "a comparison needs a scenario; this map was loaded from a file",
+            ));
+        };
+        // The value is read as a parameter's (named, a number of its type).
+        let config = self.system.wiring().config(component)?;
+        let spec = config
+            .specs()
+            .iter()
+            .find(|s| s.name == name)
+            .ok_or_else(|| crate::errors::ConfigError::UnknownParameter {
+                name: name.to_owned(),
+                line: None,
+            })?;
+        let value = spec.parse(text, None)?;
+        let a = self.setup()?;
+        let mut b = a.clone();
+        b.params
+            .entry(component.name().to_owned())
+            .or_default()
+            .insert(name.to_owned(), value);
+        compare(scenario, files, &a, &b)
     }
 }

@@ -150,49 +150,46 @@ impl Wiring {
         Ok(wiring)
     }
 
-    /// Connects the data ports of spec §0 and the system's bridges (the tables in
-    /// `crate::system`): once when the wiring is made, and again in a copy
-    /// ([`Wiring::try_clone`]), whose copied ports are connected to nothing.
+    /// Connects the data ports of spec §0 and the system's bridges (`crate::system`'s
+    /// tables): when the wiring is made, and in an unconnected copy ([`Wiring::try_clone`]).
     fn connect(&mut self) {
-        use ComponentKind as K;
         macro_rules! link {
-            ($from:ty, $fk:expr, $out:ident => $to:ty, $tk:expr, $inp:ident) => {{
-                let port = self.get::<$to>($tk).$inp.share();
-                self.get_mut::<$from>($fk).$out.connect(&port);
-            }};
-        }
-        macro_rules! bridge {
-            ($from:ty, $fk:expr, $out:ident => $rx:ident) => {{
+            ($from:ident . $out:ident => system . $rx:ident) => {{
                 let port = self.rx.$rx.share();
-                self.get_mut::<$from>($fk).$out.connect(&port);
+                let from = self.get_mut::<$from>(ComponentKind::$from);
+                from.$out.connect(&port);
+            }};
+            ($from:ident . $out:ident => $to:ident . $inp:ident) => {{
+                let port = self.get::<$to>(ComponentKind::$to).$inp.share();
+                let from = self.get_mut::<$from>(ComponentKind::$from);
+                from.$out.connect(&port);
             }};
         }
         // Data ports (spec §0).
-        link!(PhysicsSim, K::PhysicsSim, angle => MotorControl, K::MotorControl, in_current_wheel_angle);
-        link!(PhysicsSim, K::PhysicsSim, position => MotorControl, K::MotorControl, in_simulated_position);
-        link!(MotorControl, K::MotorControl, torque => PhysicsSim, K::PhysicsSim, torque);
-        link!(MotorControl, K::MotorControl, out_current_wheel_angle => Localization, K::Localization, in_current_wheel_angle);
-        link!(MotorControl, K::MotorControl, out_simulated_position_to_localization => Localization, K::Localization, in_simulated_position);
-        link!(Localization, K::Localization, out_current_position => LocalPathPlanning, K::LocalPathPlanning, in_current_position);
-        link!(Localization, K::Localization, out_current_position => DriveControl, K::DriveControl, in_current_position);
-        link!(Localization, K::Localization, out_current_position => GlobalPathPlanning, K::GlobalPathPlanning, in_current_position);
-        link!(DriveControl, K::DriveControl, target_velocity => MotorControl, K::MotorControl, target_velocity);
-        link!(DriveControl, K::DriveControl, out_deviating => LocalPathPlanning, K::LocalPathPlanning, in_deviating);
-        link!(LocalPathPlanning, K::LocalPathPlanning, drive_cons => DriveControl, K::DriveControl, in_control_points);
+        link!(PhysicsSim.angle => MotorControl.in_current_wheel_angle);
+        link!(PhysicsSim.position => MotorControl.in_simulated_position);
+        link!(MotorControl.torque => PhysicsSim.torque);
+        link!(MotorControl.out_current_wheel_angle => Localization.in_current_wheel_angle);
+        link!(MotorControl.out_simulated_position_to_localization => Localization.in_simulated_position);
+        link!(Localization.out_current_position => LocalPathPlanning.in_current_position);
+        link!(Localization.out_current_position => DriveControl.in_current_position);
+        link!(Localization.out_current_position => GlobalPathPlanning.in_current_position);
+        link!(DriveControl.target_velocity => MotorControl.target_velocity);
+        link!(DriveControl.out_deviating => LocalPathPlanning.in_deviating);
+        link!(LocalPathPlanning.drive_cons => DriveControl.in_control_points);
         // The system's ends: service calls and facts.
-        bridge!(MapBuilder, K::MapBuilder, set_map => set_map);
-        bridge!(MapMaintenance, K::MapMaintenance, map_update_out => map_update);
-        bridge!(GlobalPathPlanning, K::GlobalPathPlanning, global_path_course => global_path);
-        bridge!(GlobalPathPlanning, K::GlobalPathPlanning, planning_failure => global_failure);
-        bridge!(LocalPathPlanning, K::LocalPathPlanning, invent_gui_cons => local_path);
-        bridge!(LocalPathPlanning, K::LocalPathPlanning, invent_gui_failure => local_failure);
-        bridge!(PhysicsSim, K::PhysicsSim, bump => bump);
-        bridge!(DriveControl, K::DriveControl, safety_stop => safety_stop);
+        link!(MapBuilder.set_map => system.set_map);
+        link!(MapMaintenance.map_update_out => system.map_update);
+        link!(GlobalPathPlanning.global_path_course => system.global_path);
+        link!(GlobalPathPlanning.planning_failure => system.global_failure);
+        link!(LocalPathPlanning.invent_gui_cons => system.local_path);
+        link!(LocalPathPlanning.invent_gui_failure => system.local_failure);
+        link!(PhysicsSim.bump => system.bump);
+        link!(DriveControl.safety_stop => system.safety_stop);
     }
 
-    /// A copy in the same state, connected as this one is, sharing nothing with it (a
-    /// checkpoint of a replay). `None` while a sample injected into a port waits for its
-    /// component's next execution (it cannot be copied): a tick later it can be.
+    /// A copy in the same state, connected alike, sharing nothing (a replay's checkpoint).
+    /// `None` while an injected sample waits for its component (a tick later it can be).
     pub fn try_clone(&self) -> Option<Self> {
         let mut copy = Self {
             ec: self.ec.try_clone()?,

@@ -1,0 +1,127 @@
+// The compare view (issue 16): "compare with…" from the Parameters tab runs the scenario
+// loaded twice to its outcome — A with the set-up as it is now (start, goal, map edits,
+// changed parameters), B with one parameter changed — and shows both robots on one canvas
+// (B as a violet ghost, its trail too), their speeds overlaid, and the summary table: time
+// to goal, path length, minimum clearance, arrival heading error, replans and energy
+// (Σ|τ·ω|·Δt). The runs are the core's (`CompareView`, `Comparison`); the page draws.
+import { CompareView } from '../pkg/rtnav_wasm.js';
+import { el } from './dom.js';
+
+const WIDTH = 640;
+const HEIGHT = 400;
+
+/** The form in the Parameters tab; the view opens under the stage. */
+export function createCompare(formRoot, viewRoot, app) {
+  const { demo } = app;
+  let current = null;
+
+  const select = el('select', { id: 'compare-param', 'aria-label': 'Parameter to change in run B' });
+  const value = el('input', {
+    type: 'text', id: 'compare-value', inputmode: 'decimal', size: 8,
+    'aria-label': 'Value in run B', placeholder: 'value',
+  });
+  const run = el('button', { type: 'button', id: 'compare-run', class: 'secondary', onclick: () => start() }, 'Compare');
+  const note = el('p', { class: 'panel-message', id: 'compare-message', role: 'status', hidden: true });
+  formRoot.append(el('details', { class: 'compare-form', id: 'compare-form' },
+    el('summary', {}, 'Compare with…'),
+    el('p', { class: 'hint' }, 'Run this set-up (A) and the same with one value changed (B) to the end, side by side.'),
+    el('div', { class: 'compare-inputs' }, select, value, run),
+    note));
+
+  const canvas = el('canvas', { id: 'compare-canvas', width: WIDTH, height: HEIGHT, 'aria-label': 'Both runs at their end, B as the ghost' });
+  const plot = el('canvas', { id: 'compare-plot', width: WIDTH, height: 160, 'aria-label': 'Speed over time, A and B' });
+  const table = el('table', { class: 'compare-table', id: 'compare-table' });
+  const title = el('h2', { id: 'compare-title' }, 'Compare');
+  const close = el('button', {
+    type: 'button', class: 'link', id: 'compare-close',
+    onclick: () => { viewRoot.hidden = true; current?.free(); current = null; },
+  }, 'close');
+  viewRoot.append(
+    el('div', { class: 'panel-head' }, title, close),
+    el('div', { class: 'compare-body' },
+      el('div', { class: 'compare-pictures' }, canvas, plot,
+        el('p', { class: 'compare-key' },
+          el('span', { class: 'key-a' }, 'A solid (teal trail)'), ' · ',
+          el('span', { class: 'key-b' }, 'B ghost (violet)'))),
+      table));
+  viewRoot.hidden = true;
+
+  function fillParams() {
+    const r = app.attempt(() => JSON.parse(demo.params_json()));
+    if (!r.ok) return;
+    const keep = select.value;
+    select.replaceChildren(...r.value.flatMap((c) => c.params.map((p) => el('option', {
+      value: `${c.component}/${p.name}`, dataset: { value: String(p.value) },
+    }, `${c.component} · ${p.name}`))));
+    if (keep) select.value = keep;
+    else select.value = 'LocalPathPlanning/PostureConsiderationLevel';
+  }
+  select.addEventListener('change', () => {
+    value.placeholder = select.selectedOptions[0]?.dataset.value ?? 'value';
+  });
+  formRoot.querySelector('#compare-form').addEventListener('toggle', fillParams);
+  app.on('loaded', fillParams);
+
+  const say = (text, level) => {
+    note.textContent = text;
+    note.dataset.level = level;
+    note.hidden = !text;
+  };
+
+  /** Runs the comparison of the parameter `key` (`Component/Name`) set to `text`. */
+  function start(key = select.value, text = value.value) {
+    const [component, name] = key.split('/');
+    say('Running both…', 'info');
+    const r = app.attempt(() => CompareView.run(demo, component, name, text.trim(), WIDTH, HEIGHT));
+    if (!r.ok) return say(`No comparison: ${r.error}`, 'error');
+    current?.free();
+    current = r.value;
+    say('', 'info');
+    show(current, `${name} = ${text.trim()}`);
+    return JSON.parse(current.table_json());
+  }
+
+  function show(view, what) {
+    view.render();
+    const bytes = new Uint8ClampedArray(app.memory.buffer, view.frame_ptr(), view.frame_len());
+    canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(bytes), WIDTH, HEIGHT), 0, 0);
+    const data = JSON.parse(view.table_json());
+    title.textContent = `Compare on ${data.scenario.replaceAll('_', ' ')}: B with ${what}`;
+    table.replaceChildren(
+      el('thead', {}, el('tr', {}, el('th', {}, ''), el('th', {}, 'A'), el('th', {}, 'B (ghost)'))),
+      el('tbody', {}, ...data.rows.map(([m, a, b]) => el('tr', { dataset: { measure: m } },
+        el('th', { scope: 'row' }, m), el('td', {}, a), el('td', {}, b)))),
+    );
+    drawPlot(JSON.parse(view.plots_json()));
+    viewRoot.hidden = false;
+    viewRoot.scrollIntoView({ block: 'nearest' });
+  }
+
+  function drawPlot(p) {
+    const ctx = plot.getContext('2d');
+    const { width: w, height: h } = plot;
+    ctx.clearRect(0, 0, w, h);
+    const tMax = Math.max(...p.t_a.slice(-1), ...p.t_b.slice(-1), 1);
+    const vMax = Math.max(0.1, ...p.v_a.map(Math.abs), ...p.v_b.map(Math.abs));
+    const x = (t) => 40 + ((w - 50) * t) / tMax;
+    const y = (v) => h - 20 - ((h - 30) * v) / vMax;
+    ctx.strokeStyle = '#94a3b8';
+    ctx.beginPath();
+    ctx.moveTo(40, 10); ctx.lineTo(40, h - 20); ctx.lineTo(w - 10, h - 20);
+    ctx.stroke();
+    ctx.fillStyle = '#334155';
+    ctx.font = '11px sans-serif';
+    ctx.fillText(`${vMax.toFixed(2)} m/s`, 2, 14);
+    ctx.fillText('speed', 2, h / 2);
+    ctx.fillText(`${tMax.toFixed(1)} s`, w - 40, h - 6);
+    for (const [ts, vs, colour] of [[p.t_a, p.v_a, '#0d9488'], [p.t_b, p.v_b, '#7c3aed']]) {
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ts.forEach((t, i) => (i ? ctx.lineTo(x(t), y(vs[i])) : ctx.moveTo(x(t), y(vs[i]))));
+      ctx.stroke();
+    }
+  }
+
+  return { start };
+}

@@ -1,0 +1,197 @@
+// The timeline under the canvas (issue 16): play and pause, a slider to seek to any time of
+// the run, one tick back and forth, the run's events marked on the track (plans, failures,
+// bumps, faults, arrival), and the run as a replay file: download it (`*.rtnav.json`: the
+// set-up and every request with its simulated time) or load one.
+//
+// Every state is the core's (`Session`): a seek restores the nearest checkpoint and runs
+// from it (`demo.seek`), the recorded requests after the time reached are replayed as the
+// clock runs on, and a request made there drops them. The page only reads `timeline_json()`
+// a few times a second and draws it.
+import { Demo } from '../../pkg/rtnav_wasm.js';
+import { el, setText } from '../dom.js';
+import { downloadText } from '../download.js';
+
+const POLL_MS = 200;
+const MARK_TITLES = {
+  plan: 'plan', failure: 'planning failure', bump: 'bump', fault: 'fault', arrival: 'arrival',
+};
+
+const secs = (ns) => ns / 1e9;
+
+export function createTimeline(root, app) {
+  const { demo } = app;
+  let view = null;
+  let lastPoll = -Infinity;
+  let dragging = false;
+  let marksKey = '';
+
+  const message = el('span', { class: 'timeline-message', id: 'timeline-message', role: 'status' });
+  const say = (text, level = 'info') => {
+    message.textContent = text;
+    message.dataset.level = level;
+  };
+
+  const play = el('button', {
+    type: 'button', id: 'tl-play', class: 'plain', title: 'Play or pause the clock',
+    onclick: () => {
+      demo.set_paused(!demo.paused());
+      refresh(true);
+    },
+  }, 'Pause');
+  const back = el('button', {
+    type: 'button', id: 'tl-back', class: 'plain', 'aria-label': 'One tick back',
+    title: 'One tick back (re-simulated from the nearest checkpoint)',
+    onclick: () => stepBy(-1),
+  }, '◀ 1');
+  const forth = el('button', {
+    type: 'button', id: 'tl-forth', class: 'plain', 'aria-label': 'One tick forward',
+    title: 'One tick forward', onclick: () => stepBy(1),
+  }, '1 ▶');
+  const slider = el('input', {
+    type: 'range', id: 'tl-slider', min: 0, max: 1, step: 0.001, value: 0,
+    'aria-label': 'Simulated time', title: 'Drag to any time of the run',
+  });
+  const marks = el('div', { class: 'timeline-marks', id: 'tl-marks', 'aria-hidden': 'true' });
+  const track = el('div', { class: 'timeline-track' }, marks, slider);
+  const time = el('output', { class: 'timeline-time', id: 'tl-time' }, '0.0 / 0.0 s');
+
+  const fileInput = el('input', {
+    type: 'file', id: 'replay-file', accept: '.json,application/json', hidden: true,
+  });
+  const download = el('button', {
+    type: 'button', id: 'replay-download', class: 'secondary',
+    title: 'Download this run as a replay file: its set-up and every request with its time (a teacher can replay it exactly)',
+    onclick: () => {
+      const r = app.attempt(() => demo.replay_json());
+      if (!r.ok) return say(`No replay: ${r.error}`, 'error');
+      const name = `${app.scenarios?.current ?? 'run'}-${demo.time_s().toFixed(1)}s.rtnav.json`;
+      downloadText(r.value, name, 'application/json');
+      say(`Replay saved (${(r.value.length / 1024).toFixed(1)} KB).`, 'success');
+    },
+  }, 'Download replay');
+  const load = el('button', {
+    type: 'button', id: 'replay-load', class: 'secondary',
+    title: 'Load a replay file (*.rtnav.json) and replay it to its end',
+    onclick: () => fileInput.click(),
+  }, 'Load replay…');
+  fileInput.addEventListener('change', async () => {
+    const file = fileInput.files[0];
+    fileInput.value = '';
+    if (file) await loadReplay(await file.text());
+  });
+
+  root.append(
+    el('div', { class: 'timeline-row' }, play, back, forth, track, time),
+    el('div', { class: 'timeline-row timeline-files' }, download, load, fileInput, message),
+  );
+
+  /** Everything that reads the system again after a jump in time. */
+  function jumped() {
+    app.log.clear();
+    app.log.update();
+    app.emit('changed');
+    app.stage.draw();
+    refresh(true);
+  }
+
+  function seek(t) {
+    const r = app.attempt(() => demo.seek(t));
+    if (!r.ok) say(`Cannot seek: ${r.error}`, 'error');
+    jumped();
+  }
+
+  function stepBy(ticks) {
+    demo.set_paused(true);
+    if (ticks > 0) {
+      app.attempt(() => demo.step_ticks(ticks));
+      app.stage.draw();
+      refresh(true);
+    } else {
+      seek(Math.max(0, demo.time_s() + ticks * demo.tick_s()));
+    }
+  }
+
+  slider.addEventListener('input', () => {
+    dragging = true;
+    demo.set_paused(true);
+    seek(Number(slider.value));
+  });
+  slider.addEventListener('change', () => {
+    dragging = false;
+  });
+
+  /** Loads a replay file's text: its scenario first, then the replay, run to its end. */
+  async function loadReplay(text) {
+    let name;
+    try {
+      name = app.guard.call(() => Demo.replay_scenario(text));
+    } catch (e) {
+      return say(`This replay cannot be used: ${e?.message ?? e}`, 'error');
+    }
+    if (!(await app.scenarios.load(name))) return say(`The scenario ${name} could not be loaded.`, 'error');
+    demo.set_paused(true);
+    const r = app.attempt(() => JSON.parse(demo.load_replay(text)));
+    jumped();
+    if (!r.ok) return say(`This replay cannot be used: ${r.error}`, 'error');
+    const c = r.value;
+    root.dataset.replayHash = c.hash;
+    root.dataset.replayMatches = String(c.matches);
+    const where = `${secs(c.end_ns).toFixed(1)} s, ${c.inputs} requests`;
+    if (c.matches) {
+      say(`Replay loaded (${where}): the same trace as recorded.`, 'success');
+      app.log.page(`Replay of ${name} loaded: ${where}, trace hash ${c.hash.slice(0, 12)}… as recorded. Drag the timeline to go back.`, 'info');
+    } else {
+      say(`Replay loaded (${where}), but its trace differs from the recorded one.`, 'error');
+      app.log.page(`Replay of ${name}: trace hash ${c.hash.slice(0, 12)}…, recorded ${c.expected_hash.slice(0, 12)}…`, 'error');
+    }
+    return c;
+  }
+
+  function drawMarks() {
+    const span = Math.max(view.end_ns - view.start_ns, 1);
+    const key = `${view.start_ns}/${view.end_ns}/${view.marks.length}`;
+    if (key === marksKey) return;
+    marksKey = key;
+    marks.replaceChildren(...view.marks.map((m) => el('span', {
+      class: `timeline-mark mark-${m.kind}`,
+      style: `left: ${(100 * (m.t_ns - view.start_ns)) / span}%`,
+      title: `${secs(m.t_ns).toFixed(2)} s · ${MARK_TITLES[m.kind] ?? m.kind}: ${m.text}`,
+      dataset: { kind: m.kind, t: String(secs(m.t_ns)) },
+    })));
+  }
+
+  function refresh(force = false) {
+    const now = performance.now();
+    if (!force && now - lastPoll < POLL_MS) return;
+    lastPoll = now;
+    const r = app.attempt(() => JSON.parse(demo.timeline_json()));
+    const paused = demo.paused();
+    setText(play, paused ? 'Play' : 'Pause');
+    play.classList.toggle('active', paused);
+    if (!r.ok) {
+      root.dataset.enabled = 'false';
+      return;
+    }
+    root.dataset.enabled = 'true';
+    view = r.value;
+    slider.min = String(secs(view.start_ns));
+    slider.max = String(secs(view.end_ns));
+    if (!dragging) slider.value = String(secs(view.now_ns));
+    setText(time, `${secs(view.now_ns).toFixed(1)} / ${secs(view.end_ns).toFixed(1)} s`);
+    root.dataset.checkpoints = String(view.checkpoints);
+    root.dataset.pending = String(view.pending);
+    drawMarks();
+  }
+
+  app.on('loaded', () => {
+    marksKey = '';
+    say('');
+    refresh(true);
+  });
+
+  return {
+    update: () => refresh(false),
+    loadReplay,
+    seek,
+  };
+}
