@@ -148,6 +148,15 @@ test('the timeline and the compare view fit small screens', { timeout: 180_000 }
       assert.ok(box[0] >= 0 && box[1] <= box[2] + 0.5, `timeline ${box} on ${name}`);
       await page.$eval('#timeline', (e) => e.scrollIntoView());
       await screenshot(page, `timeline-${name}.png`, { docs: false });
+      // The compare view covers the page and fits it.
+      await page.evaluate(() => window.rtnav.compare.start('LocalPathPlanning/PostureConsiderationLevel', '0'));
+      await page.waitForSelector('#compare-view:not([hidden])', WAIT);
+      const view = await page.$eval('#compare-view', (e) => {
+        const r = e.getBoundingClientRect();
+        return [r.left, r.right, e.scrollWidth <= e.clientWidth + 1, document.documentElement.clientWidth];
+      });
+      assert.ok(view[0] >= 0 && view[1] <= view[3] + 0.5 && view[2], `compare view ${view} on ${name}`);
+      await screenshot(page, `compare-${name}.png`, { docs: false });
       assert.deepEqual(problems, []);
     } finally {
       await small.close();
