@@ -239,3 +239,59 @@ fn posture_consideration_0_and_85_on_parking_wall_arrive_at_different_headings()
         "{e}"
     );
 }
+
+/// A 5-minute run of open_field back and forth between two corners (a new goal at each
+/// arrival), then seeks to times spread over it: each restores a checkpoint and re-simulates
+/// at most the checkpoints' spacing. The page's bound is 100 ms (a release build); a debug
+/// build is allowed ten times that.
+#[test]
+fn any_seek_on_a_five_minute_run_is_fast() {
+    use rtnav::interfaces::{Direction, Pose};
+    let mut s = loaded("open_field");
+    s.apply(&Input::ActivateAll).unwrap();
+    let corners = [
+        Pose::new(2.5, 2.5, 0.0),
+        Pose::new(23.0, 15.5, core::f64::consts::FRAC_PI_2),
+    ];
+    let mut next = 0;
+    while s.system().time() < 300.0 {
+        s.step_ticks(500);
+        if s.system().mission().is_arrived() {
+            s.apply(&Input::SetGoal {
+                goal: corners[next],
+                direction: Direction::Forward,
+            })
+            .unwrap();
+            next = 1 - next;
+        }
+    }
+    let end = s.system().time_ns();
+    let hash_end = hash(&s);
+    let view = s.timeline_view().unwrap();
+    println!(
+        "5-minute run: {} requests, {} checkpoints {} s apart, replay {} bytes",
+        view.inputs,
+        view.checkpoints,
+        view.checkpoint_ns as f64 * 1e-9,
+        s.replay_json().unwrap().len()
+    );
+    assert!(view.inputs >= 4, "it drove back and forth: {view:?}");
+    assert!(view.checkpoints <= MAX_CHECKPOINTS);
+    let mut worst: f64 = 0.0;
+    for k in 0..20u64 {
+        // 20 times spread over the run, back and forth (a stride coprime with 20).
+        let t = (k * 7 % 20) * (end / 20) + 12_345_000;
+        let started = Instant::now();
+        s.seek(t).unwrap();
+        worst = worst.max(started.elapsed().as_secs_f64() * 1e3);
+    }
+    let limit = if cfg!(debug_assertions) {
+        1000.0
+    } else {
+        100.0
+    };
+    println!("slowest of 20 seeks: {worst:.1} ms (limit {limit} ms)");
+    assert!(worst < limit, "{worst} ms");
+    s.seek(end).unwrap();
+    assert_eq!(hash(&s), hash_end);
+}

@@ -81,6 +81,14 @@ test('a downloaded replay, loaded after a reload, gives the same trace and frame
   const marks = await page.$$eval('#tl-marks .timeline-mark', (m) => m.map((e) => e.dataset.kind));
   assert.ok(marks.includes('plan'), `marks ${marks}`);
 
+  // How long a seek takes in this build of the page (reported; the bound is the release
+  // build's, checked natively by core/tests/replay.rs).
+  const seekMs = await page.evaluate((end) => [1, end - 0.5, 5, end, 0.5].map((t) => {
+    const t0 = performance.now();
+    window.rtnav.demo.seek(t);
+    return performance.now() - t0;
+  }), end);
+  console.log(`replay ${size} bytes; seeks in the page: ${seekMs.map((m) => m.toFixed(1)).join(', ')} ms`);
   // Back to 3 s: another frame; forth to the end: the recorded hash and frame again.
   await page.evaluate(() => window.rtnav.timeline.seek(3));
   assert.equal(await simTime(page), 3);
