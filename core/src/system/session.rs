@@ -446,6 +446,16 @@ impl Session {
     /// (the remainder kept; nothing while paused; at most [`MAX_STEP_MS`] per call; negative
     /// or non-finite counts as 0). Returns the number of ticks run.
     pub fn advance(&mut self, elapsed_ms: f64) -> u64 {
+        self.advance_while(elapsed_ms, || true)
+    }
+
+    /// [`advance`](Self::advance) within a budget: the time owed runs tick by tick while
+    /// `more()` says so (asked after each tick; at least one tick runs when one is owed).
+    /// What does not run stays owed for the next call, up to [`MAX_STEP_MS`] of wall time
+    /// × the speed: a machine too slow for the speed runs slower instead of falling ever
+    /// further behind. The ticks are the same ones, whichever calls run them, so the trace
+    /// does not depend on how the time was cut (the page's frame budget).
+    pub fn advance_while(&mut self, elapsed_ms: f64, mut more: impl FnMut() -> bool) -> u64 {
         if self.clock.paused {
             return 0;
         }
@@ -454,12 +464,26 @@ impl Session {
         } else {
             0.0
         };
-        self.clock.pending_ns += libm::round(ms * self.clock.speed * 1e6) as u64;
+        let owed_max = libm::round(MAX_STEP_MS * self.clock.speed * 1e6) as u64;
+        let owed = self.clock.pending_ns + libm::round(ms * self.clock.speed * 1e6) as u64;
+        self.clock.pending_ns = owed.min(owed_max);
         let base = self.system.wiring().execution_context().base_period_ns();
-        let ticks = self.clock.pending_ns / base;
-        self.clock.pending_ns %= base;
-        self.timeline.run(&mut self.system, ticks);
-        ticks
+        let mut ran = 0;
+        while self.clock.pending_ns >= base {
+            self.timeline.run(&mut self.system, 1);
+            self.clock.pending_ns -= base;
+            ran += 1;
+            if !more() {
+                break;
+            }
+        }
+        ran
+    }
+
+    /// Simulated time owed to the clock and not yet run \[s\] (what a frame budget left for
+    /// later; below one base tick when the machine keeps up).
+    pub fn behind_s(&self) -> f64 {
+        self.clock.pending_ns as f64 * 1e-9
     }
 
     /// Runs `ticks` base ticks now, paused or not (single step).
