@@ -133,6 +133,8 @@ async function paint(budget) {
   await page.mouse.up();
   // The frames while the edits are planned around, and a moment after.
   await page.waitForTimeout(1500);
+  // One more frame start, so a long last frame counts too.
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
   const { frames, own, updates } = await page.evaluate(() => ({
     frames: window.__frames.slice(),
     own: window.rtnav.frameTimes(),
