@@ -66,6 +66,8 @@
 mod conf_bundle;
 mod error;
 mod events;
+mod exercise;
+mod exercise_run;
 mod input;
 mod inspect;
 mod kind;
@@ -85,6 +87,11 @@ mod wiring;
 pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
+pub use exercise::{
+    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ExerciseWatch, ParameterValues,
+    Verdict, parameter_values,
+};
+pub use exercise_run::{ExerciseRun, TimedInput, check_exercise};
 pub use input::Input;
 pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;
