@@ -19,6 +19,8 @@ import { createParamsPanel } from './js/panels/params.js';
 import { createInspector } from './js/panels/inspector.js';
 import { createPlots } from './js/panels/plots.js';
 import { createShare } from './js/panels/share.js';
+import { createExercisePanel } from './js/panels/exercise.js';
+import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -26,6 +28,7 @@ const $ = (id) => document.getElementById(id);
 const FRAME_TIMES = 600;
 
 async function boot() {
+  translateStatic();
   const wasm = await init();
   const guard = createCrashGuard($('crash'), $('crash-message'));
   const demo = guard.call(() => new Demo(640, 400));
@@ -66,6 +69,14 @@ async function boot() {
   const inspector = createInspector($('inspector-panel'), app);
   const plots = createPlots($('plots-panel'), app);
   createShare($('share'), $('view'), app);
+  const exercise = createExercisePanel($('exercise'), app);
+  // English / 日本語: the page reloads in the other language with this set-up.
+  const languageSelect = $('language');
+  languageSelect.value = language();
+  languageSelect.addEventListener('change', () => {
+    const r = scenarios.current ? app.attempt(() => demo.share_token()) : { ok: false };
+    switchLanguage(languageSelect.value, r.ok ? r.value : null);
+  });
   const tabs = createTabs($('panel-tabs'), [...document.querySelectorAll('#panels .tab-panel')], app, 'rtc');
   const scenarios = createScenarios(
     { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
@@ -91,6 +102,7 @@ async function boot() {
     telemetry.update();
     toolbar.update();
     legend.update(app.stage.robotBox);
+    exercise.update(t1);
     app.notice.update(app.stage.robotBox);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();
@@ -107,6 +119,7 @@ async function boot() {
     app,
     scenarios,
     tabs,
+    exercise,
     inspector,
     /** Frame times (step + render + blit) of the last frames, ms. */
     frameTimes: () => frameTimes.slice(),
@@ -123,9 +136,8 @@ async function boot() {
 
 boot().catch((e) => {
   const box = $('crash');
-  box.querySelector('h2').textContent = 'The demo could not start';
-  box.querySelector('p').textContent =
-    'Could not load the WebAssembly module or the scenarios. Build them with `cargo xtask demo`.';
+  box.querySelector('h2').textContent = t('crash.boot.title');
+  box.querySelector('p').textContent = t('crash.boot.text');
   $('crash-message').textContent = String(e && e.stack ? e.stack : e);
   box.hidden = false;
 });

@@ -12,13 +12,14 @@
 // right mouse button, or two fingers drag the picture; Fit shows the whole map again.
 // A paint stroke is one MapUpdate, sent when the stroke ends (issue 15): the cells under the
 // brush are gathered while it moves and previewed on the overlay.
+import { t } from './i18n.js';
 
 const TOOL_HINTS = {
-  goal: 'Goal: press where the robot should go and drag toward the heading it should end with.',
-  start: 'Start: press where the robot should stand and drag toward its heading (while it is not driving).',
-  paint: 'Obstacle: paint cells, even while the robot drives: one stroke is one MapUpdate, sent when you let go.',
-  erase: 'Erase: free cells (one stroke is one MapUpdate with value 0).',
-  pan: 'Pan: drag the picture (also the middle or right mouse button, or two fingers). Wheel or pinch to zoom.',
+  goal: t('hint.goal'),
+  start: t('hint.start'),
+  paint: t('hint.paint'),
+  erase: t('hint.erase'),
+  pan: t('hint.pan'),
 };
 const COLOURS = { goal: '#e8590c', start: '#1c7ed6', paint: '#212529', erase: '#f8f9fa' };
 /** Zoom per wheel pixel (a notch of 100 px zooms about 1.16×). */

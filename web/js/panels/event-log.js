@@ -4,6 +4,7 @@
 // core's (`rtnav::system::EventKind`), numbers already written for people; the page only
 // writes the time.
 import { el } from '../dom.js';
+import { t } from '../i18n.js';
 
 const MAX_ENTRIES = 300;
 
@@ -13,8 +14,8 @@ export const seconds = (t) => `${t.toFixed(3)} s`;
 export function createEventLog(root, app) {
   const { demo } = app;
   const list = el('ol', { id: 'events', class: 'events', reversed: true });
-  const clear = el('button', { type: 'button', class: 'link', id: 'clear-log', onclick: () => list.replaceChildren() }, 'clear');
-  root.append(el('div', { class: 'panel-head' }, el('h2', {}, 'Event log'), clear), list);
+  const clear = el('button', { type: 'button', class: 'link', id: 'clear-log', onclick: () => list.replaceChildren() }, t('log.clear'));
+  root.append(el('div', { class: 'panel-head' }, el('h2', {}, t('log.title')), clear), list);
 
   /** The component an instance name names (`MotorControl0` → `MotorControl`). */
   const componentOf = (instance) => instance.replace(/\d+$/, '');
