@@ -428,18 +428,27 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
     Ok(ExitCode::SUCCESS)
 }
 
-fn check(path: &Path, conf: Option<&Path>, root: Option<PathBuf>, json: bool) -> CliResult<ExitCode> {
+fn check(
+    path: &Path,
+    conf: Option<&Path>,
+    root: Option<PathBuf>,
+    json: bool,
+) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
     let text = match conf {
         Some(p) => Some(
-            std::fs::read_to_string(p).map_err(|e| format!("cannot read `{}`: {e}", p.display()))?,
+            std::fs::read_to_string(p)
+                .map_err(|e| format!("cannot read `{}`: {e}", p.display()))?,
         ),
         None => None,
     };
-    let status = check_exercise(&scenario, &resolver, text.as_deref(), &[])
-        .map_err(|e| e.to_string())?;
+    let status =
+        check_exercise(&scenario, &resolver, text.as_deref(), &[]).map_err(|e| e.to_string())?;
     if json {
-        println!("{}", serde_json::to_string(&status).map_err(|e| e.to_string())?);
+        println!(
+            "{}",
+            serde_json::to_string(&status).map_err(|e| e.to_string())?
+        );
     } else {
         println!("scenario {}", scenario.name);
         println!("{status}");

@@ -46,7 +46,10 @@ fn reference_solutions_pass_and_wrong_ones_fail() {
         assert!(text.contains("verdict  PASSED"), "{text}");
         let (code, text) = check(name, Some(&format!("{name}.wrong.conf")));
         assert_eq!(code, 1, "{name} wrong:\n{text}");
-        assert!(text.contains("verdict  FAILED") && text.contains("[!]"), "{text}");
+        assert!(
+            text.contains("verdict  FAILED") && text.contains("[!]"),
+            "{text}"
+        );
     }
 }
 

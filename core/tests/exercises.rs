@@ -66,7 +66,8 @@ fn there_are_eight_exercises_over_the_three_seeds() {
         .unwrap()
         .filter_map(|e| {
             let n = e.unwrap().file_name().into_string().unwrap();
-            n.strip_prefix("ex_").map(|r| format!("ex_{}", r.trim_end_matches(".json")))
+            n.strip_prefix("ex_")
+                .map(|r| format!("ex_{}", r.trim_end_matches(".json")))
         })
         .collect();
     on_disk.sort();
@@ -85,7 +86,12 @@ macro_rules! conf_exercise {
             failed($name, &wrong, |c| matches!(c, $which));
             // As the scenario stands, nothing changed: not done yet.
             let untouched = check($name, None, &[]);
-            assert_eq!(untouched.verdict, Verdict::Failed, "{}:\n{untouched}", $name);
+            assert_eq!(
+                untouched.verdict,
+                Verdict::Failed,
+                "{}:\n{untouched}",
+                $name
+            );
         }
     };
 }
@@ -155,7 +161,10 @@ fn a_parameter_the_exercise_does_not_name_fails_it() {
     assert_eq!(rule.changed, vec!["DriveControl.MaxVelocity".to_owned()]);
     // Everything else passed: only the rule failed.
     let others = &status.checks[..status.checks.len() - 1];
-    assert!(others.iter().all(|c| c.state == CheckState::Passed), "{status}");
+    assert!(
+        others.iter().all(|c| c.state == CheckState::Passed),
+        "{status}"
+    );
 }
 
 #[test]
@@ -182,11 +191,21 @@ fn bad_exercises_are_refused_with_the_reason() {
     for (from, to, says) in [
         ("\"within_s\": 60", "\"within_s\": -1", "within_s = -1"),
         ("\"LocalPathPlanning.dmin\"", "\"Planner.dmin\"", "Planner"),
-        ("\"LocalPathPlanning.dmin\"", "\"dmin\"", "Component.Parameter"),
-        ("{\n        \"check\": \"no_bump\"\n      }", "{\"check\": \"only_allowed\"}", "always checked"),
+        (
+            "\"LocalPathPlanning.dmin\"",
+            "\"dmin\"",
+            "Component.Parameter",
+        ),
+        (
+            "{\n        \"check\": \"no_bump\"\n      }",
+            "{\"check\": \"only_allowed\"}",
+            "always checked",
+        ),
     ] {
         assert!(text.contains(from), "{from}");
-        let err = Scenario::from_json(&text.replace(from, to)).unwrap_err().to_string();
+        let err = Scenario::from_json(&text.replace(from, to))
+            .unwrap_err()
+            .to_string();
         assert!(err.contains(says), "{to}: {err}");
     }
 }

@@ -161,11 +161,9 @@ impl fmt::Display for Check {
         match self {
             Self::Arrived { within_s } => write!(f, "arrive within {} s", number(*within_s)),
             Self::NoBump => write!(f, "no bump"),
-            Self::ArrivalHeading { within_deg } => write!(
-                f,
-                "end within {}° of the goal heading",
-                number(*within_deg)
-            ),
+            Self::ArrivalHeading { within_deg } => {
+                write!(f, "end within {}° of the goal heading", number(*within_deg))
+            }
             Self::ApproachHeading { within_deg } => write!(
                 f,
                 "reach the goal within {}° of its heading before the final turn",
@@ -239,11 +237,9 @@ impl Exercise {
             }
         }
         for name in &self.may_change {
-            let (component, param) = name.split_once('.').ok_or_else(|| {
-                err(format!(
-                    "may_change `{name}`: expected Component.Parameter"
-                ))
-            })?;
+            let (component, param) = name
+                .split_once('.')
+                .ok_or_else(|| err(format!("may_change `{name}`: expected Component.Parameter")))?;
             ComponentKind::from_name(component)
                 .map_err(|e| err(format!("may_change `{name}`: {e}")))?;
             if param.is_empty() {
@@ -549,11 +545,17 @@ impl ExerciseWatch {
         match kind {
             EventKind::LocalPlanSent { replanned, .. } if *replanned => {
                 self.replans += 1;
-                self.set_count(|c| matches!(c, Check::MaxReplans { .. } | Check::MinReplans { .. }), self.replans);
+                self.set_count(
+                    |c| matches!(c, Check::MaxReplans { .. } | Check::MinReplans { .. }),
+                    self.replans,
+                );
             }
             EventKind::GlobalPlan { .. } => {
                 self.global_plans += 1;
-                self.set_count(|c| matches!(c, Check::MinGlobalPlans { .. }), self.global_plans);
+                self.set_count(
+                    |c| matches!(c, Check::MinGlobalPlans { .. }),
+                    self.global_plans,
+                );
             }
             EventKind::ComponentError { component, .. } => {
                 self.fault_seen = true;

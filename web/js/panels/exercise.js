@@ -3,7 +3,7 @@
 // core (`Demo.exercise_json`, `rtnav::system::ExerciseWatch`) from the facts and samples
 // of the run, so `rtnav check` gives the same verdict; this panel only shows them.
 import { el, setText } from '../dom.js';
-import { t, num } from '../i18n.js';
+import { t, num, has } from '../i18n.js';
 
 /** How often the checklist is read while the robot drives [ms]. */
 const EVERY_MS = 150;
@@ -49,7 +49,7 @@ export function createExercisePanel(root, app) {
       ? t('exercise.may_change', { names: status.may_change.join(', ') })
       : '';
     const acts = status.actions.length
-      ? t('exercise.actions', { names: status.actions.join(', ') })
+      ? t('exercise.actions', { names: status.actions.map((a) => (has(`action.${a}`) ? t(`action.${a}`) : a)).join(t('exercise.then')) })
       : '';
     setText(allowed, [may, acts].filter(Boolean).join(' '));
     list.replaceChildren(...status.checks.map((c) => el('li', {

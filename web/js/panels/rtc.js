@@ -5,6 +5,7 @@
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';
+import { componentStatus } from '../words.js';
 
 const ACTIONS = {
   Inactive: ['activate', t('rtc.activate')],
@@ -90,7 +91,7 @@ export function createRtcPanel(root, app) {
         setText(r.badge, c.state);
         setText(r.name, c.instance_name);
         setText(r.rate, `${c.rate} Hz`);
-        setText(r.status, c.status);
+        setText(r.status, componentStatus(c.status));
         const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: c.last_error }) : '';
         setText(r.reason, why);
         r.reason.hidden = !why;
