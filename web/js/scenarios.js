@@ -93,7 +93,7 @@ export function createScenarios(dom, app) {
       }
     } catch (e) {
       app.notice.show(t('scenarios.load_failed', { name, error: e.message ?? e }), 'error');
-      app.log.page(`Scenario ${name} not loaded: ${e.message ?? e}`, 'error');
+      app.log.page(t('scenarios.not_loaded', { name, error: e.message ?? e }), 'error');
       dom.select.value = current ?? CUSTOM;
       return false;
     } finally {
@@ -147,7 +147,7 @@ export function createScenarios(dom, app) {
       const r = app.attempt(() => demo.load_map_files(files, MOVINGAI_CELL_M));
       if (!r.ok) {
         app.notice.show(t('scenarios.map_refused', { error: r.error }), 'error');
-        app.log.page(`Map file refused: ${r.error}`, 'error');
+        app.log.page(t('refused', { what: t('scenarios.map_file'), error: r.error }), 'error');
         return false;
       }
     } finally {

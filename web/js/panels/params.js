@@ -67,11 +67,11 @@ export function createParamsPanel(root, app) {
     const r = app.attempt(() => demo.conf_import(text));
     if (!r.ok) {
       say(`${file.name} not imported (nothing changed): ${r.error}`, 'error');
-      app.log.page(`.conf import refused: ${r.error}`, 'warn');
+      app.log.page(t('refused', { what: t('params.import.what'), error: r.error }), 'warn');
       return;
     }
     say(`${file.name} imported.`, 'success');
-    app.log.page(`Configuration imported from ${file.name}`, 'info');
+    app.log.page(t('params.imported', { file: file.name }), 'info');
     app.emit('changed');
   });
   const importButton = el('label', {
@@ -98,7 +98,7 @@ export function createParamsPanel(root, app) {
       row.node.classList.add('refused');
       const p = held.get(`${component}/${name}`);
       row.input.value = show(p?.value);
-      app.log.page(`${component}.${name} = ${text} refused: ${r.error}`, 'warn');
+      app.log.page(t('refused', { what: `${component}.${name} = ${text}`, error: r.error }), 'warn');
     } else {
       // The core logs the change itself (ParameterSet).
       row.error.hidden = true;
@@ -193,7 +193,7 @@ export function createParamsPanel(root, app) {
       if (!r.ok) {
         error.textContent = r.error;
         error.hidden = false;
-        app.log.page(`SetPDGain refused: ${r.error}`, 'warn');
+        app.log.page(t('refused', { what: 'SetPDGain', error: r.error }), 'warn');
         for (const [n, input] of inputs) input.value = show(held.get(`MotorControl/${n}`)?.value);
       } else {
         // The core logs the call itself (GainsSet).

@@ -32,8 +32,8 @@ export function createRtcPanel(root, app) {
     if (/^(Reset|Activate)/.test(what)) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
-      app.notice.show(`${what} refused: ${r.error}`, 'error');
-      app.log.page(`${what} refused: ${r.error}`, 'warn');
+      app.notice.show(t('refused', { what, error: r.error }), 'error');
+      app.log.page(t('refused', { what, error: r.error }), 'warn');
     }
     app.emit('changed');
     return r;
@@ -54,13 +54,13 @@ export function createRtcPanel(root, app) {
       const what = action.dataset.action;
       request(`${action.textContent} ${c.name}`, () => demo[what](c.name));
     });
-    fault.addEventListener('click', () => request(`Inject fault into ${c.name}`, () => demo.inject_fault(c.name)));
+    fault.addEventListener('click', () => request(t('rtc.fault.request', { name: c.name }), () => demo.inject_fault(c.name)));
     let glitch = null;
     if (c.name === GLITCH.component) {
       glitch = el('button', { type: 'button', class: 'glitch danger', title: GLITCH_TITLE }, t('rtc.glitch'));
       glitch.addEventListener('click', () => {
-        const r = request('Sensor glitch', () => demo.inject_input(GLITCH.component, GLITCH.port, GLITCH.sample()));
-        if (r.ok) app.log.page(`Sensor glitch: (NaN, 0, 0, 0) written into ${GLITCH.component}.${GLITCH.port}`, 'warn');
+        const r = request(t('rtc.glitch'), () => demo.inject_input(GLITCH.component, GLITCH.port, GLITCH.sample()));
+        if (r.ok) app.log.page(t('rtc.glitch.log', { port: `${GLITCH.component}.${GLITCH.port}` }), 'warn');
       });
     }
     const li = el('li', { class: 'rtc', dataset: { component: c.name } },

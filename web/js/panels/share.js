@@ -27,7 +27,7 @@ export function createShare(root, canvas, app) {
     if (!JSON.parse(demo.telemetry_json()).driving) {
       app.log.clear();
       app.log.update();
-      app.log.page('Set-up restarted from the share link (what the link opens with).', 'info');
+      app.log.page(t('share.restarted'), 'info');
     }
     app.emit('changed');
     app.stage.draw();

@@ -15,8 +15,8 @@ export function createSystemBar(root, app) {
     if (endsNotices) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
-      app.notice.show(`${what} refused: ${r.error}`, 'error');
-      app.log.page(`${what} refused: ${r.error}`, 'warn');
+      app.notice.show(t('refused', { what, error: r.error }), 'error');
+      app.log.page(t('refused', { what, error: r.error }), 'warn');
     }
     app.emit('changed');
     return r;
@@ -26,15 +26,15 @@ export function createSystemBar(root, app) {
   const buttons = {
     activate: el('button', {
       type: 'button', id: 'activate-all', title: t('system.activate_all.title'),
-      onclick: () => request('Activate all', () => demo.activate_all(), true),
+      onclick: () => request(t('system.activate_all'), () => demo.activate_all(), true),
     }, t('system.activate_all')),
     deactivate: el('button', {
       type: 'button', id: 'deactivate-all', class: 'secondary', title: t('system.deactivate_all.title'),
-      onclick: () => request('Deactivate all', () => demo.deactivate_all(), false),
+      onclick: () => request(t('system.deactivate_all'), () => demo.deactivate_all(), false),
     }, t('system.deactivate_all')),
     reset: el('button', {
       type: 'button', id: 'reset-all', class: 'secondary', title: t('system.reset_all.title'),
-      onclick: () => request('Reset all', () => demo.reset_all(), true),
+      onclick: () => request(t('system.reset_all'), () => demo.reset_all(), true),
     }, t('system.reset_all')),
   };
   root.append(
