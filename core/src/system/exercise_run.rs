@@ -3,7 +3,8 @@
 //! page loads a `.conf` ([`Input::LoadConf`]), the drive started with Activate all, the
 //! student's timed requests applied, and the [`ExerciseWatch`] fed until the exercise ends.
 
-use super::exercise::{ExerciseStatus, ExerciseWatch, parameter_values};
+use super::exercise::{ExerciseStatus, parameter_values};
+use super::exercise_watch::ExerciseWatch;
 use super::input::Input;
 use super::robot::System;
 use super::scenario::{FileResolver, Scenario};

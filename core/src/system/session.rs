@@ -26,7 +26,8 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
 use super::events::SystemEvent;
-use super::exercise::{ExerciseStatus, ExerciseWatch, parameter_values};
+use super::exercise::{ExerciseStatus, parameter_values};
+use super::exercise_watch::ExerciseWatch;
 use super::input::Input;
 use super::kind::ComponentKind;
 use super::rates::Rates;
