@@ -1,7 +1,7 @@
 // End-to-end (issue 17): an exercise done in the page — its checklist live, its verdict at
 // the end, the same as `rtnav check` gives for the same configuration — and the page in
 // Japanese: chosen from the browser's language, kept in local storage, carried by share
-// links; at 1280×800 and 390×844 no English left (apart from names: RT-components, ports,
+// links; at 1280×800, 768×1024 and 390×844 no English left (apart from names: RT-components, ports,
 // parameters, services, states, units) and nothing overlapping. Screenshots of the verdict
 // and of the Japanese page go to docs/ (UPDATE_SCREENSHOTS=1).
 import { test, after } from 'node:test';
@@ -102,7 +102,7 @@ const NAMES = /\b([A-Z]{2,}\w*|\w+[a-z][A-Z]\w*|Deviatinglen|Localization\d*|rtn
 /** Words of three or more Latin letters left once the names are taken out. */
 const english = (text) => (text.replace(/\.[a-z]{2,4}\b/g, ' ').replace(NAMES, ' ').match(/[A-Za-z]{3,}/g) ?? []);
 
-for (const [width, height, scenario] of [[1280, 800, 'ex_fault_recovery'], [390, 844, 'ex_pd_gains']]) {
+for (const [width, height, scenario] of [[1280, 800, 'ex_fault_recovery'], [768, 1024, 'ex_door_dmin'], [390, 844, 'ex_pd_gains']]) {
   test(`the page in Japanese at ${width}×${height}: no English left, nothing overlapping`, { timeout: 180_000 }, async () => {
     // The browser's language chooses Japanese (nothing in the address, nothing kept).
     const { context } = await browser({ locale: 'ja-JP', viewport: { width, height } });

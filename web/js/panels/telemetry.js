@@ -2,7 +2,7 @@
 // goal is, what the planners have done. `data-*` attributes carry the raw values (the
 // end-to-end test reads them).
 import { el, setText } from '../dom.js';
-import { t, has } from '../i18n.js';
+import { t, has, language } from '../i18n.js';
 
 const FIELDS = [
   ['status', t('telemetry.status')],
@@ -39,7 +39,8 @@ export function createTelemetry(root, app) {
       root.dataset.status = v.status_kind;
       set('plans', t('telemetry.plans.value', { global: v.global_plans, local: v.local_plans }));
       // What the core says is true (rtnav::system::Status), not guessed here.
-      const said = has(`status.${v.status_kind}`) ? t(`status.${v.status_kind}`) : v.status;
+      // The core's words in English; in another language, the catalogue's for the status's kind.
+      const said = language() !== 'en' && has(`status.${v.status_kind}`) ? t(`status.${v.status_kind}`) : v.status;
       let status = said.charAt(0).toUpperCase() + said.slice(1);
       if (v.paused) status += t('telemetry.paused');
       set('status', status);
