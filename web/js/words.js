@@ -31,6 +31,45 @@ const FORMS = [
 /** The parts of LocalPathPlanning's "holds" list. */
 const HELD = { nothing: 'held.nothing', map: 'held.map', 'start and goal': 'held.start_goal', path: 'held.path', arrived: 'held.arrived' };
 
+/** The reasons the core gives that the page can say in its language: [pattern, key, parts]. */
+const REASONS = [
+  [/^no path from cell \((-?\d+), (-?\d+)\) to cell \((-?\d+), (-?\d+)\)$/, 'reason.no_path', ['x0', 'y0', 'x1', 'y1']],
+];
+
+/** `text`, a reason the core gave, in the page's language (as given when not known). */
+export function reasonText(text) {
+  if (language() === 'en') return text;
+  for (const [pattern, key, names] of REASONS) {
+    const m = pattern.exec(text);
+    if (m) return t(key, Object.fromEntries(names.map((n, i) => [n, m[i + 1]])));
+  }
+  return text;
+}
+
+/**
+ * An event of the core (`{kind, text, data}`) in the page's language: the kinds a notice
+ * shows over the map are said from their fields; the others as the core wrote them.
+ */
+export function eventText(e) {
+  if (language() === 'en' || !e.data) return e.text;
+  const d = e.data;
+  const n = (v, digits) => (typeof v === 'number' ? v.toFixed(digits) : String(v));
+  switch (e.kind) {
+    case 'PlanningFailed':
+      return t('event.planning_failed', { planner: d.planner, reason: reasonText(d.reason) });
+    case 'Arrived':
+      return t('event.arrived', {
+        x: n(d.pose?.x, 3), y: n(d.pose?.y, 3), error: n(d.position_error, 3),
+      });
+    case 'ComponentError':
+      return t('event.component_error', { component: d.component, callback: d.callback, reason: reasonText(d.reason) });
+    case 'FaultInjected':
+      return t('event.fault_injected', { component: d.component });
+    default:
+      return e.text;
+  }
+}
+
 /** `text`, a component's status line from the core, in the page's language. */
 export function componentStatus(text) {
   if (language() === 'en') return text;
@@ -42,6 +81,7 @@ export function componentStatus(text) {
     if ('retrying' in vars) vars.retrying = vars.retrying ? t('rtcstatus.retrying') : '';
     if ('what' in vars && key === 'rtcstatus.safe_stop') vars.what = t(`rtcstatus.zero_${vars.what}`);
     if ('what' in vars && key === 'rtcstatus.waiting') vars.what = vars.what.replace(' and ', '・');
+    if ('reason' in vars) vars.reason = reasonText(vars.reason);
     if ('held' in vars) vars.held = vars.held.split(', ').map((h) => (HELD[h] ? t(HELD[h]) : h)).join('・');
     return t(key, vars);
   }
