@@ -19,6 +19,8 @@ import { createParamsPanel } from './js/panels/params.js';
 import { createInspector } from './js/panels/inspector.js';
 import { createPlots } from './js/panels/plots.js';
 import { createShare } from './js/panels/share.js';
+import { createExercisePanel } from './js/panels/exercise.js';
+import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -32,6 +34,7 @@ const STEP_BUDGET_MS = 10;
 const BEHIND_S = 0.05;
 
 async function boot() {
+  translateStatic();
   const wasm = await init();
   const guard = createCrashGuard($('crash'), $('crash-message'));
   const demo = guard.call(() => new Demo(640, 400));
@@ -72,6 +75,14 @@ async function boot() {
   const inspector = createInspector($('inspector-panel'), app);
   const plots = createPlots($('plots-panel'), app);
   createShare($('share'), $('view'), app);
+  const exercise = createExercisePanel($('exercise'), app);
+  // English / 日本語: the page reloads in the other language with this set-up.
+  const languageSelect = $('language');
+  languageSelect.value = language();
+  languageSelect.addEventListener('change', () => {
+    const r = scenarios.current ? app.attempt(() => demo.share_token()) : { ok: false };
+    switchLanguage(languageSelect.value, r.ok ? r.value : null);
+  });
   const tabs = createTabs($('panel-tabs'), [...document.querySelectorAll('#panels .tab-panel')], app, 'rtc');
   const scenarios = createScenarios(
     { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
@@ -92,10 +103,7 @@ async function boot() {
     simTime.textContent = `${demo.time_s().toFixed(3)} s`;
     const behind = demo.behind_s();
     simTime.classList.toggle('behind', behind > BEHIND_S);
-    simTime.title = behind > BEHIND_S
-      ? `${behind.toFixed(2)} s of simulated time behind the chosen speed: this machine `
-        + 'runs the simulation slower for now, tick for tick the same'
-      : '';
+    simTime.title = behind > BEHIND_S ? t('clock.behind', { s: behind.toFixed(2) }) : '';
     const components = JSON.parse(demo.components_json());
     systemBar.update(components);
     rtc.update(components);
@@ -103,6 +111,7 @@ async function boot() {
     telemetry.update();
     toolbar.update();
     legend.update(app.stage.robotBox);
+    exercise.update(t1);
     app.notice.update(app.stage.robotBox);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();
@@ -119,6 +128,7 @@ async function boot() {
     app,
     scenarios,
     tabs,
+    exercise,
     inspector,
     /** Frame times (step + render + blit) of the last frames, ms. */
     frameTimes: () => frameTimes.slice(),
@@ -135,9 +145,8 @@ async function boot() {
 
 boot().catch((e) => {
   const box = $('crash');
-  box.querySelector('h2').textContent = 'The demo could not start';
-  box.querySelector('p').textContent =
-    'Could not load the WebAssembly module or the scenarios. Build them with `cargo xtask demo`.';
+  box.querySelector('h2').textContent = t('crash.boot.title');
+  box.querySelector('p').textContent = t('crash.boot.text');
   $('crash-message').textContent = String(e && e.stack ? e.stack : e);
   box.hidden = false;
 });

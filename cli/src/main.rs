@@ -6,6 +6,7 @@
 //! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
 //! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
+//! rtnav check fixtures/scenarios/ex_door_dmin.json --conf my.conf   # exit 0 pass, 1 fail
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
 //! rtnav soak --hours 24 --scenario fixtures/scenarios/willow_garage.json
 //! ```
@@ -33,7 +34,7 @@ use rtnav::data::RepoResolver;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
     BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
-    System, setup,
+    System, Verdict, check_exercise, setup,
 };
 use rtnav_cli::{alloc, fuzz, soak};
 
@@ -103,6 +104,22 @@ enum Command {
         /// The folder the scenario's paths are relative to.
         #[arg(long)]
         root: Option<PathBuf>,
+    },
+    /// Do a scenario's exercise with a configuration handed in and print the checklist and
+    /// the verdict. Exits 0 when every check passes, 1 when one fails.
+    Check {
+        /// The scenario file (JSON) with an exercise.
+        scenario: PathBuf,
+        /// The student's configuration: an OpenRTM `.conf` bundle as the page saves it
+        /// (components or parameters left out keep the scenario's values).
+        #[arg(long)]
+        conf: Option<PathBuf>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+        /// Print the result as one line of JSON instead.
+        #[arg(long)]
+        json: bool,
     },
     /// Fuzz the readers and the hostile calls: mutated fixture inputs and generated ones,
     /// each checked for panics, time (1 s), allocation bounds and refused calls that change
@@ -193,6 +210,12 @@ fn main() -> ExitCode {
             cell,
             root,
         } => inspect(&scenario, cell, root),
+        Command::Check {
+            scenario,
+            conf,
+            root,
+            json,
+        } => check(&scenario, conf.as_deref(), root, json),
         Command::Fuzz {
             seconds,
             cases,
@@ -403,6 +426,38 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
     Ok(ExitCode::SUCCESS)
+}
+
+fn check(
+    path: &Path,
+    conf: Option<&Path>,
+    root: Option<PathBuf>,
+    json: bool,
+) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let text = match conf {
+        Some(p) => Some(
+            std::fs::read_to_string(p)
+                .map_err(|e| format!("cannot read `{}`: {e}", p.display()))?,
+        ),
+        None => None,
+    };
+    let status =
+        check_exercise(&scenario, &resolver, text.as_deref(), &[]).map_err(|e| e.to_string())?;
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string(&status).map_err(|e| e.to_string())?
+        );
+    } else {
+        println!("scenario {}", scenario.name);
+        println!("{status}");
+    }
+    Ok(if status.verdict == Verdict::Passed {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 fn run_fuzz(

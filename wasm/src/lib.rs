@@ -19,6 +19,7 @@ use std::sync::Mutex;
 use wasm_bindgen::prelude::*;
 
 mod demo;
+mod exercise;
 mod files;
 mod teach;
 mod views;

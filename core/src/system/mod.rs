@@ -66,6 +66,9 @@
 mod conf_bundle;
 mod error;
 mod events;
+mod exercise;
+mod exercise_run;
+mod exercise_watch;
 mod input;
 mod inspect;
 mod kind;
@@ -85,6 +88,12 @@ mod wiring;
 pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
+pub use exercise::{
+    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Verdict,
+    parameter_values,
+};
+pub use exercise_run::{ExerciseRun, TimedInput, check_exercise};
+pub use exercise_watch::ExerciseWatch;
 pub use input::Input;
 pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;

@@ -26,6 +26,8 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
 use super::events::SystemEvent;
+use super::exercise::{ExerciseStatus, parameter_values};
+use super::exercise_watch::ExerciseWatch;
 use super::input::Input;
 use super::kind::ComponentKind;
 use super::rates::Rates;
@@ -188,6 +190,8 @@ pub struct Session {
     map_name: String,
     /// Events handed out so far ([`Session::new_events`]).
     events_seen: u64,
+    /// The scenario's exercise being watched, if it has one.
+    exercise: Option<ExerciseWatch>,
 }
 
 /// Every [`TUNABLE`] parameter's requested value, by component and name.
@@ -205,6 +209,18 @@ fn parameters_of(system: &System) -> Parameters {
         }
     }
     out
+}
+
+/// The watch of `scenario`'s exercise over `system`, its rules from `base`'s parameters
+/// (the scenario as written).
+fn watch(scenario: &Scenario, base: &System, system: &System) -> Option<ExerciseWatch> {
+    let exercise = scenario.exercise.as_ref()?;
+    Some(ExerciseWatch::new(
+        exercise,
+        scenario.time_limit,
+        parameter_values(base),
+        system,
+    ))
 }
 
 /// The most a share token may inflate to \[bytes\] (16 MiB; a set-up is a few KiB).
@@ -235,6 +251,7 @@ impl Session {
             edits: BTreeMap::new(),
             map_name: String::new(),
             events_seen: 0,
+            exercise: None,
         })
     }
 
@@ -315,6 +332,10 @@ impl Session {
 
     fn install(&mut self, system: System, source: Source) {
         self.baseline = parameters_of(&system);
+        self.exercise = match &source {
+            Source::Scenario { scenario, .. } => watch(scenario, &system, &system),
+            _ => None,
+        };
         self.system = system;
         self.source = source;
         self.clock.pending_ns = 0;
@@ -432,6 +453,7 @@ impl Session {
             .and_then(|base| Ok((base, setup::build(scenario, files, setup, DRAWN)?)))?;
         let (base, system) = system;
         self.baseline = parameters_of(&base);
+        self.exercise = watch(scenario, &base, &system);
         self.timeline = Timeline::new(&scenario.events);
         self.system = system;
         self.clock.pending_ns = 0;
@@ -477,6 +499,7 @@ impl Session {
                 break;
             }
         }
+        self.look();
         ran
     }
 
@@ -489,6 +512,19 @@ impl Session {
     /// Runs `ticks` base ticks now, paused or not (single step).
     pub fn step_ticks(&mut self, ticks: u64) {
         self.timeline.run(&mut self.system, ticks);
+        self.look();
+    }
+
+    /// The exercise watch reads what happened (after time ran or a request was made).
+    fn look(&mut self) {
+        if let Some(w) = &mut self.exercise {
+            w.observe(&self.system);
+        }
+    }
+
+    /// The scenario's exercise as it stands, if it has one.
+    pub fn exercise(&self) -> Option<ExerciseStatus> {
+        self.exercise.as_ref().map(ExerciseWatch::status)
     }
 
     /// Pauses or resumes the clock.
@@ -557,6 +593,7 @@ impl Session {
         if replans && planners_active && !self.system.is_driving() {
             self.system.run_until_planned(PLAN_SECONDS)?;
         }
+        self.look();
         Ok(())
     }
 
