@@ -6,9 +6,16 @@
 //! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
 //! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
+//! rtnav system fixtures/scenarios/open_field.json --dot | dot -Tsvg > system.svg
+//! rtnav system fixtures/scenarios/open_field.json --json --until 5
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
 //! rtnav soak --hours 24 --scenario fixtures/scenarios/willow_garage.json
 //! ```
+//!
+//! `system` prints the system's own description (`rtnav::system::SystemGraph`): the
+//! components, their data and service ports with types, and the connections, as Graphviz
+//! `dot` or as JSON; with `--until` after running the scenario that long, so the JSON holds
+//! each port's newest sample and each service port's last call.
 //!
 //! `fuzz` and `soak` are the reliability tools of issue 18 (`rtnav_cli::fuzz`,
 //! `rtnav_cli::soak`); `cargo xtask fuzz` and `cargo xtask soak` run them in release mode.
@@ -104,6 +111,24 @@ enum Command {
         #[arg(long)]
         root: Option<PathBuf>,
     },
+    /// Print the system's description — components, ports, types, connections — as
+    /// Graphviz dot (default) or JSON.
+    System {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// Graphviz dot (the default).
+        #[arg(long, conflicts_with = "json")]
+        dot: bool,
+        /// JSON: components, ports with their types and newest samples, connections.
+        #[arg(long)]
+        json: bool,
+        /// Run the scenario this long [s] first (else: as set up, before it drives).
+        #[arg(long)]
+        until: Option<f64>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+    },
     /// Fuzz the readers and the hostile calls: mutated fixture inputs and generated ones,
     /// each checked for panics, time (1 s), allocation bounds and refused calls that change
     /// something. Prints, per target, the inputs tried, the failures and the slowest input.
@@ -193,6 +218,13 @@ fn main() -> ExitCode {
             cell,
             root,
         } => inspect(&scenario, cell, root),
+        Command::System {
+            scenario,
+            dot: _,
+            json,
+            until,
+            root,
+        } => describe(&scenario, json, until, root),
         Command::Fuzz {
             seconds,
             cases,
@@ -402,6 +434,39 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
         .map_err(|e| e.to_string())?;
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
+    Ok(ExitCode::SUCCESS)
+}
+
+fn describe(
+    path: &Path,
+    json: bool,
+    until: Option<f64>,
+    root: Option<PathBuf>,
+) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let graph = match until {
+        Some(t) => {
+            let mut run = ScenarioRun::new(&scenario, &resolver).map_err(|e| e.to_string())?;
+            run.set_limit(t).map_err(|e| e.to_string())?;
+            while run.advance(1000).is_none() {}
+            run.system().wiring().graph()
+        }
+        None => setup::build(
+            &scenario,
+            &resolver,
+            &Setup::of(&scenario),
+            BuildOptions::default(),
+        )
+        .map_err(|e| e.to_string())?
+        .wiring()
+        .graph(),
+    };
+    if json {
+        let text = serde_json::to_string_pretty(&graph).map_err(|e| e.to_string())?;
+        println!("{text}");
+    } else {
+        print!("{}", graph.to_dot());
+    }
     Ok(ExitCode::SUCCESS)
 }
 

@@ -20,6 +20,7 @@ use wasm_bindgen::prelude::*;
 
 mod demo;
 mod files;
+mod system_view;
 mod teach;
 mod views;
 
