@@ -22,9 +22,12 @@ use crate::local::FieldExtent;
 use crate::map::{GridMap, MapUpdate};
 use crate::motion::{BumpReport, ModelFrame, PhysicsParams};
 use crate::rtc::{
-    Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, PortView,
-    Time, TimedDouble, TimedDoubleSeq, short,
+    Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, Time,
+    TimedDouble, TimedDoubleSeq,
 };
+
+mod connections;
+use connections::Call;
 
 /// What happened in one base tick, or in one request between ticks.
 #[derive(Debug, Clone, PartialEq)]
@@ -116,72 +119,26 @@ impl Wiring {
 
         // Data ports (spec §0), each connection recorded for the system's description.
         use ComponentKind as K;
-        let rtc = Peer::Rtc;
         let mut links = Links::default();
-        let l = &mut links;
-        l.connect(
-            rtc(K::PhysicsSim),
-            &mut physics.angle,
-            rtc(K::MotorControl),
-            &motor.in_current_wheel_angle,
-        );
-        l.connect(
-            rtc(K::PhysicsSim),
-            &mut physics.position,
-            rtc(K::MotorControl),
-            &motor.in_simulated_position,
-        );
-        l.connect(
-            rtc(K::MotorControl),
-            &mut motor.torque,
-            rtc(K::PhysicsSim),
-            &physics.torque,
-        );
-        l.connect(
-            rtc(K::MotorControl),
-            &mut motor.out_current_wheel_angle,
-            rtc(K::Localization),
-            &localization.in_current_wheel_angle,
-        );
-        l.connect(
-            rtc(K::MotorControl),
-            &mut motor.out_simulated_position_to_localization,
-            rtc(K::Localization),
-            &localization.in_simulated_position,
-        );
-        for (kind, port) in [
-            (K::LocalPathPlanning, &local.in_current_position),
-            (K::DriveControl, &drive.in_current_position),
-            (K::GlobalPathPlanning, &global.in_current_position),
-        ] {
-            l.connect(
-                rtc(K::Localization),
-                &mut localization.out_current_position,
-                rtc(kind),
-                port,
-            );
+        macro_rules! link {
+            ($l:ident; $from:expr, $out:expr => $to:expr, $in:expr) => {
+                $l.connect($from, &mut $out, $to, &$in)
+            };
         }
-        l.connect(
-            rtc(K::DriveControl),
-            &mut drive.target_velocity,
-            rtc(K::MotorControl),
-            &motor.target_velocity,
-        );
-        l.connect(
-            rtc(K::DriveControl),
-            &mut drive.out_deviating,
-            rtc(K::LocalPathPlanning),
-            &local.in_deviating,
-        );
-        l.connect(
-            rtc(K::LocalPathPlanning),
-            &mut local.drive_cons,
-            rtc(K::DriveControl),
-            &drive.in_control_points,
-        );
+        let rtc = Peer::Rtc;
+        link!(links; rtc(K::PhysicsSim), physics.angle => rtc(K::MotorControl), motor.in_current_wheel_angle);
+        link!(links; rtc(K::PhysicsSim), physics.position => rtc(K::MotorControl), motor.in_simulated_position);
+        link!(links; rtc(K::MotorControl), motor.torque => rtc(K::PhysicsSim), physics.torque);
+        link!(links; rtc(K::MotorControl), motor.out_current_wheel_angle => rtc(K::Localization), localization.in_current_wheel_angle);
+        link!(links; rtc(K::MotorControl), motor.out_simulated_position_to_localization => rtc(K::Localization), localization.in_simulated_position);
+        link!(links; rtc(K::Localization), localization.out_current_position => rtc(K::LocalPathPlanning), local.in_current_position);
+        link!(links; rtc(K::Localization), localization.out_current_position => rtc(K::DriveControl), drive.in_current_position);
+        link!(links; rtc(K::Localization), localization.out_current_position => rtc(K::GlobalPathPlanning), global.in_current_position);
+        link!(links; rtc(K::DriveControl), drive.target_velocity => rtc(K::MotorControl), motor.target_velocity);
+        link!(links; rtc(K::DriveControl), drive.out_deviating => rtc(K::LocalPathPlanning), local.in_deviating);
+        link!(links; rtc(K::LocalPathPlanning), local.drive_cons => rtc(K::DriveControl), drive.in_control_points);
 
-        // The system's ends: service calls (their ports are in `Services`) and the facts
-        // InventGUI is told (its in-ports).
+        // The system's ends: service calls (`Services`) and facts (InventGUI's in-ports).
         let rx = Bridges {
             set_map: InPort::new("SetMap"),
             map_update: InPort::new("MapUpdate"),
@@ -196,31 +153,11 @@ impl Wiring {
         map_maintenance.map_update_out.connect(&rx.map_update);
         global.global_path_course.connect(&rx.global_path);
         let gui = Peer::Gui;
-        l.connect(
-            rtc(K::GlobalPathPlanning),
-            &mut global.planning_failure,
-            gui,
-            &rx.global_failure,
-        );
-        l.connect(
-            rtc(K::LocalPathPlanning),
-            &mut local.invent_gui_cons,
-            gui,
-            &rx.local_path,
-        );
-        l.connect(
-            rtc(K::LocalPathPlanning),
-            &mut local.invent_gui_failure,
-            gui,
-            &rx.local_failure,
-        );
-        l.connect(rtc(K::PhysicsSim), &mut physics.bump, gui, &rx.bump);
-        l.connect(
-            rtc(K::DriveControl),
-            &mut drive.safety_stop,
-            gui,
-            &rx.safety_stop,
-        );
+        link!(links; rtc(K::GlobalPathPlanning), global.planning_failure => gui, rx.global_failure);
+        link!(links; rtc(K::LocalPathPlanning), local.invent_gui_cons => gui, rx.local_path);
+        link!(links; rtc(K::LocalPathPlanning), local.invent_gui_failure => gui, rx.local_failure);
+        link!(links; rtc(K::PhysicsSim), physics.bump => gui, rx.bump);
+        link!(links; rtc(K::DriveControl), drive.safety_stop => gui, rx.safety_stop);
 
         let mut ec = ExecutionContext::new(rates.base())?;
         let boxes: [Box<dyn Component>; 8] = [
@@ -428,19 +365,7 @@ impl Wiring {
             let (width, height, grid_size) = (map.width(), map.height(), map.grid_size());
             self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_grid_map(map);
-            let call = format!(
-                "SetMap({width}×{height} cells, GridSize {} m)",
-                crate::present::number(grid_size)
-            );
-            for kind in [
-                ComponentKind::MapMaintenance,
-                ComponentKind::GlobalPathPlanning,
-                ComponentKind::PhysicsSim,
-                ComponentKind::DriveControl,
-                ComponentKind::LocalPathPlanning,
-            ] {
-                self.called(kind, "MapBuilderProv", call.clone());
-            }
+            self.record_call(Call::SetMap(width, height, grid_size));
             self.map_loads += 1;
             self.facts.push(EventKind::MapLoaded {
                 width,
@@ -468,11 +393,7 @@ impl Wiring {
                 escaped: gpp.escaped_steps(),
             };
             self.facts.push(fact);
-            self.called(
-                ComponentKind::LocalPathPlanning,
-                "GlobalPathProv",
-                format!("GlobalPathCourse({} cells)", course.num),
-            );
+            self.record_call(Call::GlobalPathCourse(course.num));
             let r = self
                 .get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_global_path(&course);
@@ -522,22 +443,14 @@ impl Wiring {
             // Bump detection calls MotorControl's `Stop` (spec §4 Decision).
             self.get_mut::<MotorControl>(ComponentKind::MotorControl)
                 .stop();
-            self.called(ComponentKind::MotorControl, "BumpProvPort", "Stop()");
+            self.record_call(Call::Stop);
             self.facts.push(EventKind::Bump { report });
         }
         self.drain_lifecycle_events();
     }
 
     fn deliver_map_update(&mut self, u: &MapUpdate) {
-        let call = format!("MapUpdate({} cells)", u.x.len());
-        for kind in [
-            ComponentKind::GlobalPathPlanning,
-            ComponentKind::PhysicsSim,
-            ComponentKind::LocalPathPlanning,
-            ComponentKind::DriveControl,
-        ] {
-            self.called(kind, "MapMaintenanceProv", call.clone());
-        }
+        self.record_call(Call::MapUpdate(u.x.len()));
         let mut problems = Vec::new();
         let r = self
             .get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
@@ -571,80 +484,6 @@ impl Wiring {
                 reason: p,
             });
         }
-    }
-
-    // ------------------------------------------------------------------ connections
-
-    /// Records a call on a service port (the system's description shows the last one).
-    fn called(&mut self, owner: ComponentKind, port: &str, text: impl Into<String>) {
-        let recorded = self.services.called(owner, port, self.ec.time_ns(), text);
-        debug_assert!(
-            recorded,
-            "{owner}.{port} is not in the service ports' table"
-        );
-    }
-
-    /// Every data connection, as made.
-    pub fn links(&self) -> &Links {
-        &self.links
-    }
-
-    /// Every service port, with its last call.
-    pub fn services(&self) -> &Services {
-        &self.services
-    }
-
-    /// InventGUI's in-ports: the system's ends of the connections that carry facts to the
-    /// person (paths, failures, safety stops, bumps).
-    pub fn gui_ports(&self) -> Vec<PortView> {
-        let rx = &self.rx;
-        vec![
-            rx.local_path.view(),
-            rx.local_failure.view(),
-            rx.global_failure.view(),
-            rx.safety_stop.view(),
-            rx.bump.view(),
-        ]
-    }
-
-    /// Cuts (`cut`) or restores the data connection `id` between two components
-    /// (`DriveControl.TargetVelocity->MotorControl.TargetVelocity`), as RT System Editor
-    /// deletes and re-creates a connector: while cut, the out-port's samples do not reach
-    /// the in-port. Refused, changing nothing, for an unknown id, a connection to InventGUI,
-    /// or one already in that state.
-    pub fn set_connection_cut(&mut self, id: &str, cut: bool) -> crate::Result<()> {
-        let link = self
-            .links
-            .find(id)
-            .ok_or_else(|| SystemError::UnknownConnection {
-                id: id.to_owned(),
-                known: self
-                    .links
-                    .all()
-                    .iter()
-                    .filter(|l| l.cuttable())
-                    .map(|l| l.id())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })?;
-        if !link.cuttable() {
-            return Err(SystemError::ConnectionKept { id: id.to_owned() }.into());
-        }
-        if link.connector.is_cut() == cut {
-            return Err(SystemError::ConnectionAlready {
-                id: id.to_owned(),
-                state: if cut { "cut" } else { "connected" },
-            }
-            .into());
-        }
-        link.connector.set_cut(cut);
-        let connection = id.replace("->", " → ");
-        self.facts.push(if cut {
-            EventKind::ConnectionCut { connection }
-        } else {
-            EventKind::ConnectionRestored { connection }
-        });
-        Ok(())
     }
 
     // ------------------------------------------------------------------ lifecycle
@@ -792,10 +631,10 @@ impl Wiring {
         let tm = Time::from_nanos(self.ec.time_ns());
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .clear();
-        let call = format!("LoadMap({}×{} cells)", map.width(), map.height());
+        let call = Call::LoadMap(map.width(), map.height());
         self.get_mut::<MapBuilder>(ComponentKind::MapBuilder)
             .load(map, tm);
-        self.called(ComponentKind::MapBuilder, "InventGUIProv", call);
+        self.record_call(call);
         self.pump();
     }
 
@@ -807,11 +646,7 @@ impl Wiring {
         let changed = self
             .get_mut::<MapMaintenance>(ComponentKind::MapMaintenance)
             .map_update(update)?;
-        self.called(
-            ComponentKind::MapMaintenance,
-            "InventGUIProv",
-            format!("MapUpdate({cells} cells)"),
-        );
+        self.record_call(Call::EditMap(cells));
         self.facts.push(EventKind::MapUpdated { cells, changed });
         self.pump();
         Ok(changed)
@@ -860,27 +695,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .set_position(start, goal)?;
-        let pose = |p: Pose| format!("{}, {}, {}", short(p.x), short(p.y), short(p.theta));
-        let call = format!("SetPosition({}, {}, {dir})", pose(start), pose(goal));
-        self.called(
-            ComponentKind::LocalPathPlanning,
-            "InventGUIProv",
-            call.clone(),
-        );
-        self.called(ComponentKind::GlobalPathPlanning, "InventGUIProv", call);
-        if place {
-            let set = format!("({})", pose(start));
-            self.called(
-                ComponentKind::PhysicsSim,
-                "InventGUIProv",
-                format!("SetPose{set}"),
-            );
-            self.called(
-                ComponentKind::Localization,
-                "InventGUIProv",
-                format!("SetStartPose{set}"),
-            );
-        }
+        self.record_call(Call::SetPosition(start, goal, dir, place));
         self.facts.push(EventKind::GoalSet {
             start,
             goal,
@@ -903,12 +718,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .clear();
-        self.called(ComponentKind::LocalPathPlanning, "InventGUIProv", "Clear()");
-        self.called(
-            ComponentKind::GlobalPathPlanning,
-            "InventGUIProv",
-            "Clear()",
-        );
+        self.record_call(Call::Clear);
         self.facts.push(EventKind::Cleared);
     }
 
@@ -917,11 +727,7 @@ impl Wiring {
     pub fn safe_mode(&mut self) {
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .safe_mode();
-        self.called(
-            ComponentKind::LocalPathPlanning,
-            "InventGUIProv",
-            "SafeMode()",
-        );
+        self.record_call(Call::SafeMode);
         self.facts.push(EventKind::SafeMode);
     }
 
@@ -930,14 +736,7 @@ impl Wiring {
     pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
         self.get_mut::<MotorControl>(ComponentKind::MotorControl)
             .set_pd_gain(p_l, p_r, d_l, d_r)?;
-        let call = format!(
-            "SetPDGain({}, {}, {}, {})",
-            short(p_l),
-            short(p_r),
-            short(d_l),
-            short(d_r)
-        );
-        self.called(ComponentKind::MotorControl, "InventGUIProvPort", call);
+        self.record_call(Call::SetPdGain([p_l, p_r, d_l, d_r]));
         self.facts.push(EventKind::GainsSet { p_l, p_r, d_l, d_r });
         Ok(())
     }
