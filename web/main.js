@@ -10,6 +10,7 @@ import { createStage } from './js/stage.js';
 import { createScenarios } from './js/scenarios.js';
 import { createToolbar } from './js/panels/toolbar.js';
 import { createRtcPanel } from './js/panels/rtc.js';
+import { createSystemPanel } from './js/panels/system.js';
 import { createSystemBar } from './js/panels/systembar.js';
 import { createLegend } from './js/legend.js';
 import { createEventLog } from './js/panels/event-log.js';
@@ -69,6 +70,7 @@ async function boot() {
   const toolbar = createToolbar($('toolbar'), $('clock-controls'), $('map-controls'), app);
   const systemBar = createSystemBar($('system-group'), app);
   const rtc = createRtcPanel($('rtc-panel'), app);
+  const system = createSystemPanel($('system-panel'), app);
   const legend = createLegend($('legend'), $('legend-body'), $('view'), app);
   const telemetry = createTelemetry($('telemetry'), app);
   const params = createParamsPanel($('params-panel'), app);
@@ -118,6 +120,7 @@ async function boot() {
     params.update(now, tabs.visible('params'));
     inspector.update(now, tabs.visible('inspector'));
     plots.update(now, tabs.visible('plots'));
+    system.update(now, tabs.visible('system'), components);
     return !guard.crashed;
   });
   guard.onCrash(() => loop.stop());
@@ -130,6 +133,7 @@ async function boot() {
     tabs,
     exercise,
     inspector,
+    system,
     /** Frame times (step + render + blit) of the last frames, ms. */
     frameTimes: () => frameTimes.slice(),
     clearFrameTimes: () => { frameTimes.length = 0; },

@@ -7,9 +7,16 @@
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
 //! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
 //! rtnav check fixtures/scenarios/ex_door_dmin.json --conf my.conf   # exit 0 pass, 1 fail
+//! rtnav system fixtures/scenarios/open_field.json --dot | dot -Tsvg > system.svg
+//! rtnav system fixtures/scenarios/open_field.json --json --until 5
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
 //! rtnav soak --hours 24 --scenario fixtures/scenarios/willow_garage.json
 //! ```
+//!
+//! `system` prints the system's own description (`rtnav::system::SystemGraph`): the
+//! components, their data and service ports with types, and the connections, as Graphviz
+//! `dot` or as JSON; with `--until` after running the scenario that long, so the JSON holds
+//! each port's newest sample and each service port's last call.
 //!
 //! `fuzz` and `soak` are the reliability tools of issue 18 (`rtnav_cli::fuzz`,
 //! `rtnav_cli::soak`); `cargo xtask fuzz` and `cargo xtask soak` run them in release mode.
@@ -120,6 +127,23 @@ enum Command {
         /// Print the result as one line of JSON instead.
         #[arg(long)]
         json: bool,
+    /// Print the system's description — components, ports, types, connections — as
+    /// Graphviz dot (default) or JSON.
+    System {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// Graphviz dot (the default).
+        #[arg(long, conflicts_with = "json")]
+        dot: bool,
+        /// JSON: components, ports with their types and newest samples, connections.
+        #[arg(long)]
+        json: bool,
+        /// Run the scenario this long [s] first (else: as set up, before it drives).
+        #[arg(long)]
+        until: Option<f64>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
     },
     /// Fuzz the readers and the hostile calls: mutated fixture inputs and generated ones,
     /// each checked for panics, time (1 s), allocation bounds and refused calls that change
@@ -216,6 +240,13 @@ fn main() -> ExitCode {
             root,
             json,
         } => check(&scenario, conf.as_deref(), root, json),
+        Command::System {
+            scenario,
+            dot: _,
+            json,
+            until,
+            root,
+        } => describe(&scenario, json, until, root),
         Command::Fuzz {
             seconds,
             cases,
@@ -458,6 +489,39 @@ fn check(
     } else {
         ExitCode::from(1)
     })
+}
+
+fn describe(
+    path: &Path,
+    json: bool,
+    until: Option<f64>,
+    root: Option<PathBuf>,
+) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let graph = match until {
+        Some(t) => {
+            let mut run = ScenarioRun::new(&scenario, &resolver).map_err(|e| e.to_string())?;
+            run.set_limit(t).map_err(|e| e.to_string())?;
+            while run.advance(1000).is_none() {}
+            run.system().wiring().graph()
+        }
+        None => setup::build(
+            &scenario,
+            &resolver,
+            &Setup::of(&scenario),
+            BuildOptions::default(),
+        )
+        .map_err(|e| e.to_string())?
+        .wiring()
+        .graph(),
+    };
+    if json {
+        let text = serde_json::to_string_pretty(&graph).map_err(|e| e.to_string())?;
+        println!("{text}");
+    } else {
+        print!("{}", graph.to_dot());
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 fn run_fuzz(

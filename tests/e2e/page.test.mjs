@@ -23,7 +23,7 @@ import {
 } from './helpers.mjs';
 
 const SIZES = [[1280, 800], [768, 1024], [390, 844]];
-const TABS = ['rtc', 'params', 'inspector', 'plots', 'log'];
+const TABS = ['rtc', 'system', 'params', 'inspector', 'plots', 'log'];
 
 let browser;
 before(async () => {

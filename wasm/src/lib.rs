@@ -21,6 +21,7 @@ use wasm_bindgen::prelude::*;
 mod demo;
 mod exercise;
 mod files;
+mod system_view;
 mod teach;
 mod views;
 

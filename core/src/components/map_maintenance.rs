@@ -15,7 +15,7 @@
 
 use crate::errors::SystemError;
 use crate::map::{GridMap, MapUpdate};
-use crate::rtc::{Component, OutPort};
+use crate::rtc::{Component, OutPort, PortView};
 
 /// The MapMaintenance RT-component.
 #[derive(Debug)]
@@ -79,6 +79,10 @@ impl MapMaintenance {
 impl Component for MapMaintenance {
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![self.map_update_out.view()]
     }
 }
 

@@ -10,6 +10,7 @@ use core::fmt;
 
 use super::events::EventKind;
 use super::kind::ComponentKind;
+use super::links::{Links, Peer, Services};
 use super::rates::Rates;
 use crate::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
@@ -24,6 +25,9 @@ use crate::rtc::{
     Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, Time,
     TimedDouble, TimedDoubleSeq,
 };
+
+mod connections;
+use connections::Call;
 
 /// What happened in one base tick, or in one request between ticks.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,6 +59,10 @@ struct Bridges {
 pub struct Wiring {
     ec: ExecutionContext,
     rx: Bridges,
+    /// Every data connection as it was made.
+    links: Links,
+    /// Every service port and the calls made on it.
+    services: Services,
     map_loads: u64,
     map_updates: u64,
     /// Facts of requests and of the tick being pumped, not yet taken.
@@ -109,46 +117,47 @@ impl Wiring {
         let mut local = LocalPathPlanning::new(ComponentKind::LocalPathPlanning.instance_name());
         let mut drive = DriveControl::new(ComponentKind::DriveControl.instance_name());
 
-        // Data ports (spec §0).
-        physics.angle.connect(&motor.in_current_wheel_angle);
-        physics.position.connect(&motor.in_simulated_position);
-        motor.torque.connect(&physics.torque);
-        motor
-            .out_current_wheel_angle
-            .connect(&localization.in_current_wheel_angle);
-        motor
-            .out_simulated_position_to_localization
-            .connect(&localization.in_simulated_position);
-        for port in [
-            &local.in_current_position,
-            &drive.in_current_position,
-            &global.in_current_position,
-        ] {
-            localization.out_current_position.connect(port);
+        // Data ports (spec §0), each connection recorded for the system's description.
+        use ComponentKind as K;
+        let mut links = Links::default();
+        macro_rules! link {
+            ($l:ident; $from:expr, $out:expr => $to:expr, $in:expr) => {
+                $l.connect($from, &mut $out, $to, &$in)
+            };
         }
-        drive.target_velocity.connect(&motor.target_velocity);
-        drive.out_deviating.connect(&local.in_deviating);
-        local.drive_cons.connect(&drive.in_control_points);
+        let rtc = Peer::Rtc;
+        link!(links; rtc(K::PhysicsSim), physics.angle => rtc(K::MotorControl), motor.in_current_wheel_angle);
+        link!(links; rtc(K::PhysicsSim), physics.position => rtc(K::MotorControl), motor.in_simulated_position);
+        link!(links; rtc(K::MotorControl), motor.torque => rtc(K::PhysicsSim), physics.torque);
+        link!(links; rtc(K::MotorControl), motor.out_current_wheel_angle => rtc(K::Localization), localization.in_current_wheel_angle);
+        link!(links; rtc(K::MotorControl), motor.out_simulated_position_to_localization => rtc(K::Localization), localization.in_simulated_position);
+        link!(links; rtc(K::Localization), localization.out_current_position => rtc(K::LocalPathPlanning), local.in_current_position);
+        link!(links; rtc(K::Localization), localization.out_current_position => rtc(K::DriveControl), drive.in_current_position);
+        link!(links; rtc(K::Localization), localization.out_current_position => rtc(K::GlobalPathPlanning), global.in_current_position);
+        link!(links; rtc(K::DriveControl), drive.target_velocity => rtc(K::MotorControl), motor.target_velocity);
+        link!(links; rtc(K::DriveControl), drive.out_deviating => rtc(K::LocalPathPlanning), local.in_deviating);
+        link!(links; rtc(K::LocalPathPlanning), local.drive_cons => rtc(K::DriveControl), drive.in_control_points);
 
-        // The system's ends: service calls and facts.
+        // The system's ends: service calls (`Services`) and facts (InventGUI's in-ports).
         let rx = Bridges {
             set_map: InPort::new("SetMap"),
             map_update: InPort::new("MapUpdate"),
             global_path: InPort::new("GlobalPathCourse"),
-            global_failure: InPort::new("PlanningFailure"),
-            local_path: InPort::new("InventGUICons"),
-            local_failure: InPort::new("InventGUIConsFailure"),
+            global_failure: InPort::new("GlobalPathFailure"),
+            local_path: InPort::new("LocalPathInventGUI"),
+            local_failure: InPort::new("LocalPathInventGUIFailure"),
             bump: InPort::new("BumpDetection"),
             safety_stop: InPort::new("SafetyStop"),
         };
         map_builder.set_map.connect(&rx.set_map);
         map_maintenance.map_update_out.connect(&rx.map_update);
         global.global_path_course.connect(&rx.global_path);
-        global.planning_failure.connect(&rx.global_failure);
-        local.invent_gui_cons.connect(&rx.local_path);
-        local.invent_gui_failure.connect(&rx.local_failure);
-        physics.bump.connect(&rx.bump);
-        drive.safety_stop.connect(&rx.safety_stop);
+        let gui = Peer::Gui;
+        link!(links; rtc(K::GlobalPathPlanning), global.planning_failure => gui, rx.global_failure);
+        link!(links; rtc(K::LocalPathPlanning), local.invent_gui_cons => gui, rx.local_path);
+        link!(links; rtc(K::LocalPathPlanning), local.invent_gui_failure => gui, rx.local_failure);
+        link!(links; rtc(K::PhysicsSim), physics.bump => gui, rx.bump);
+        link!(links; rtc(K::DriveControl), drive.safety_stop => gui, rx.safety_stop);
 
         let mut ec = ExecutionContext::new(rates.base())?;
         let boxes: [Box<dyn Component>; 8] = [
@@ -169,6 +178,8 @@ impl Wiring {
         let mut wiring = Self {
             ec,
             rx,
+            links,
+            services: Services::default(),
             map_loads: 0,
             map_updates: 0,
             facts: Vec::new(),
@@ -354,6 +365,7 @@ impl Wiring {
             let (width, height, grid_size) = (map.width(), map.height(), map.grid_size());
             self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_grid_map(map);
+            self.record_call(Call::SetMap(width, height, grid_size));
             self.map_loads += 1;
             self.facts.push(EventKind::MapLoaded {
                 width,
@@ -381,6 +393,7 @@ impl Wiring {
                 escaped: gpp.escaped_steps(),
             };
             self.facts.push(fact);
+            self.record_call(Call::GlobalPathCourse(course.num));
             let r = self
                 .get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_global_path(&course);
@@ -430,12 +443,14 @@ impl Wiring {
             // Bump detection calls MotorControl's `Stop` (spec §4 Decision).
             self.get_mut::<MotorControl>(ComponentKind::MotorControl)
                 .stop();
+            self.record_call(Call::Stop);
             self.facts.push(EventKind::Bump { report });
         }
         self.drain_lifecycle_events();
     }
 
     fn deliver_map_update(&mut self, u: &MapUpdate) {
+        self.record_call(Call::MapUpdate(u.x.len()));
         let mut problems = Vec::new();
         let r = self
             .get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
@@ -616,8 +631,10 @@ impl Wiring {
         let tm = Time::from_nanos(self.ec.time_ns());
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .clear();
+        let call = Call::LoadMap(map.width(), map.height());
         self.get_mut::<MapBuilder>(ComponentKind::MapBuilder)
             .load(map, tm);
+        self.record_call(call);
         self.pump();
     }
 
@@ -629,6 +646,7 @@ impl Wiring {
         let changed = self
             .get_mut::<MapMaintenance>(ComponentKind::MapMaintenance)
             .map_update(update)?;
+        self.record_call(Call::EditMap(cells));
         self.facts.push(EventKind::MapUpdated { cells, changed });
         self.pump();
         Ok(changed)
@@ -677,6 +695,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .set_position(start, goal)?;
+        self.record_call(Call::SetPosition(start, goal, dir, place));
         self.facts.push(EventKind::GoalSet {
             start,
             goal,
@@ -699,6 +718,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .clear();
+        self.record_call(Call::Clear);
         self.facts.push(EventKind::Cleared);
     }
 
@@ -707,6 +727,7 @@ impl Wiring {
     pub fn safe_mode(&mut self) {
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .safe_mode();
+        self.record_call(Call::SafeMode);
         self.facts.push(EventKind::SafeMode);
     }
 
@@ -715,6 +736,7 @@ impl Wiring {
     pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
         self.get_mut::<MotorControl>(ComponentKind::MotorControl)
             .set_pd_gain(p_l, p_r, d_l, d_r)?;
+        self.record_call(Call::SetPdGain([p_l, p_r, d_l, d_r]));
         self.facts.push(EventKind::GainsSet { p_l, p_r, d_l, d_r });
         Ok(())
     }

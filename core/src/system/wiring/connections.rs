@@ -1,0 +1,188 @@
+//! The wiring's connections (issue 19): every data connection as made and every service
+//! port with its calls (`links.rs`), InventGUI's in-ports, and the cut and restore of a data
+//! connection between two components.
+
+use super::Wiring;
+use crate::errors::SystemError;
+use crate::interfaces::Pose;
+use crate::present::number;
+use crate::rtc::{PortView, short};
+use crate::system::events::EventKind;
+use crate::system::kind::ComponentKind;
+use crate::system::links::{Links, Services};
+
+/// A service call the wiring makes (spec §0's service arrows), to record on the ports it
+/// reaches with the words the System view shows.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Call {
+    /// MapBuilder's `SetMap` (width, height, `GridSize`) to every map holder.
+    SetMap(usize, usize, f64),
+    /// MapMaintenance's `MapUpdate` of so many cells to every map holder.
+    MapUpdate(usize),
+    /// InventGUI's edit of so many cells, to MapMaintenance.
+    EditMap(usize),
+    /// InventGUI's map, to MapBuilder (width, height).
+    LoadMap(usize, usize),
+    /// GlobalPathPlanning's `GlobalPathCourse` of so many cells, to LocalPathPlanning.
+    GlobalPathCourse(i32),
+    /// InventGUI's `SetPosition(start, goal, direction)`; with `true` the robot is placed.
+    SetPosition(Pose, Pose, i16, bool),
+    /// InventGUI's `Clear`.
+    Clear,
+    /// InventGUI's `SafeMode`.
+    SafeMode,
+    /// InventGUI's `SetPDGain(PGainL, PGainR, DGainL, DGainR)`.
+    SetPdGain([f64; 4]),
+    /// Bump detection's `Stop`, to MotorControl.
+    Stop,
+}
+
+const MAP_HOLDERS: [ComponentKind; 5] = [
+    ComponentKind::MapMaintenance,
+    ComponentKind::GlobalPathPlanning,
+    ComponentKind::PhysicsSim,
+    ComponentKind::DriveControl,
+    ComponentKind::LocalPathPlanning,
+];
+
+impl Wiring {
+    /// Records `call` on every service port it reaches.
+    pub(super) fn record_call(&mut self, call: Call) {
+        use ComponentKind as K;
+        const GUI: &str = "InventGUIProv";
+        let pose = |p: Pose| format!("{}, {}, {}", short(p.x), short(p.y), short(p.theta));
+        match call {
+            Call::SetMap(w, h, grid) => {
+                let text = format!("SetMap({w}×{h} cells, GridSize {} m)", number(grid));
+                for kind in MAP_HOLDERS {
+                    self.called(kind, "MapBuilderProv", text.clone());
+                }
+            }
+            Call::MapUpdate(cells) => {
+                for kind in &MAP_HOLDERS[1..] {
+                    self.called(
+                        *kind,
+                        "MapMaintenanceProv",
+                        format!("MapUpdate({cells} cells)"),
+                    );
+                }
+            }
+            Call::EditMap(cells) => {
+                self.called(K::MapMaintenance, GUI, format!("MapUpdate({cells} cells)"));
+            }
+            Call::LoadMap(w, h) => {
+                self.called(K::MapBuilder, GUI, format!("LoadMap({w}×{h} cells)"))
+            }
+            Call::GlobalPathCourse(n) => {
+                let text = format!("GlobalPathCourse({n} cells)");
+                self.called(K::LocalPathPlanning, "GlobalPathProv", text);
+            }
+            Call::SetPosition(start, goal, dir, place) => {
+                let text = format!("SetPosition({}, {}, {dir})", pose(start), pose(goal));
+                self.called(K::LocalPathPlanning, GUI, text.clone());
+                self.called(K::GlobalPathPlanning, GUI, text);
+                if place {
+                    self.called(K::PhysicsSim, GUI, format!("SetPose({})", pose(start)));
+                    self.called(
+                        K::Localization,
+                        GUI,
+                        format!("SetStartPose({})", pose(start)),
+                    );
+                }
+            }
+            Call::Clear => {
+                self.called(K::LocalPathPlanning, GUI, "Clear()");
+                self.called(K::GlobalPathPlanning, GUI, "Clear()");
+            }
+            Call::SafeMode => self.called(K::LocalPathPlanning, GUI, "SafeMode()"),
+            Call::SetPdGain(g) => {
+                let text = format!(
+                    "SetPDGain({}, {}, {}, {})",
+                    short(g[0]),
+                    short(g[1]),
+                    short(g[2]),
+                    short(g[3])
+                );
+                self.called(K::MotorControl, "InventGUIProvPort", text);
+            }
+            Call::Stop => self.called(K::MotorControl, "BumpProvPort", "Stop()"),
+        }
+    }
+
+    /// Records a call on a service port (the system's description shows the last one).
+    pub(in crate::system) fn called(
+        &mut self,
+        owner: ComponentKind,
+        port: &str,
+        text: impl Into<String>,
+    ) {
+        let recorded = self.services.called(owner, port, self.ec.time_ns(), text);
+        debug_assert!(
+            recorded,
+            "{owner}.{port} is not in the service ports' table"
+        );
+    }
+
+    /// Every data connection, as made.
+    pub fn links(&self) -> &Links {
+        &self.links
+    }
+
+    /// Every service port, with its last call.
+    pub fn services(&self) -> &Services {
+        &self.services
+    }
+
+    /// InventGUI's in-ports: the system's ends of the connections that carry facts to the
+    /// person (paths, failures, safety stops, bumps).
+    pub fn gui_ports(&self) -> Vec<PortView> {
+        let rx = &self.rx;
+        vec![
+            rx.local_path.view(),
+            rx.local_failure.view(),
+            rx.global_failure.view(),
+            rx.safety_stop.view(),
+            rx.bump.view(),
+        ]
+    }
+
+    /// Cuts (`cut`) or restores the data connection `id` between two components
+    /// (`DriveControl.TargetVelocity->MotorControl.TargetVelocity`), as RT System Editor
+    /// deletes and re-creates a connector: while cut, the out-port's samples do not reach
+    /// the in-port. Refused, changing nothing, for an unknown id, a connection to InventGUI,
+    /// or one already in that state.
+    pub fn set_connection_cut(&mut self, id: &str, cut: bool) -> crate::Result<()> {
+        let link = self
+            .links
+            .find(id)
+            .ok_or_else(|| SystemError::UnknownConnection {
+                id: id.to_owned(),
+                known: self
+                    .links
+                    .all()
+                    .iter()
+                    .filter(|l| l.cuttable())
+                    .map(|l| l.id())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })?;
+        if !link.cuttable() {
+            return Err(SystemError::ConnectionKept { id: id.to_owned() }.into());
+        }
+        if link.connector.is_cut() == cut {
+            return Err(SystemError::ConnectionAlready {
+                id: id.to_owned(),
+                state: if cut { "cut" } else { "connected" },
+            }
+            .into());
+        }
+        link.connector.set_cut(cut);
+        let connection = id.replace("->", " → ");
+        self.facts.push(if cut {
+            EventKind::ConnectionCut { connection }
+        } else {
+            EventKind::ConnectionRestored { connection }
+        });
+        Ok(())
+    }
+}
