@@ -10,6 +10,7 @@ import { createStage } from './js/stage.js';
 import { createScenarios } from './js/scenarios.js';
 import { createToolbar } from './js/panels/toolbar.js';
 import { createRtcPanel } from './js/panels/rtc.js';
+import { createSystemPanel } from './js/panels/system.js';
 import { createSystemBar } from './js/panels/systembar.js';
 import { createLegend } from './js/legend.js';
 import { createEventLog } from './js/panels/event-log.js';
@@ -21,13 +22,22 @@ import { createPlots } from './js/panels/plots.js';
 import { createShare } from './js/panels/share.js';
 import { createTimeline } from './js/panels/timeline.js';
 import { createCompare } from './js/compare.js';
+import { createExercisePanel } from './js/panels/exercise.js';
+import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
 
 const $ = (id) => document.getElementById(id);
 
 /** How many frame times the page keeps (for the end-to-end test's median). */
 const FRAME_TIMES = 600;
+/** Wall time a frame may spend simulating [ms]; the ticks left over run in the next frames
+ * (the same ticks: the trace does not change), so a plan on a large map doesn't freeze the
+ * page for the rest of its frame's simulated time. */
+const STEP_BUDGET_MS = 10;
+/** Owed simulated time [s] from which the clock shows that it is behind. */
+const BEHIND_S = 0.05;
 
 async function boot() {
+  translateStatic();
   const wasm = await init();
   const guard = createCrashGuard($('crash'), $('crash-message'));
   const demo = guard.call(() => new Demo(640, 400));
@@ -62,12 +72,21 @@ async function boot() {
   const toolbar = createToolbar($('toolbar'), $('clock-controls'), $('map-controls'), app);
   const systemBar = createSystemBar($('system-group'), app);
   const rtc = createRtcPanel($('rtc-panel'), app);
+  const system = createSystemPanel($('system-panel'), app);
   const legend = createLegend($('legend'), $('legend-body'), $('view'), app);
   const telemetry = createTelemetry($('telemetry'), app);
   const params = createParamsPanel($('params-panel'), app);
   const inspector = createInspector($('inspector-panel'), app);
   const plots = createPlots($('plots-panel'), app);
   createShare($('share'), $('view'), app);
+  const exercise = createExercisePanel($('exercise'), app);
+  // English / 日本語: the page reloads in the other language with this set-up.
+  const languageSelect = $('language');
+  languageSelect.value = language();
+  languageSelect.addEventListener('change', () => {
+    const r = scenarios.current ? app.attempt(() => demo.share_token()) : { ok: false };
+    switchLanguage(languageSelect.value, r.ok ? r.value : null);
+  });
   const tabs = createTabs($('panel-tabs'), [...document.querySelectorAll('#panels .tab-panel')], app, 'rtc');
   const scenarios = createScenarios(
     { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
@@ -82,13 +101,16 @@ async function boot() {
   const frameTimes = [];
   const loop = startLoop((elapsedMs) => {
     const t0 = performance.now();
-    guard.call(() => demo.step(elapsedMs));
+    guard.call(() => demo.step_within(elapsedMs, STEP_BUDGET_MS));
     app.stage.draw();
     const t1 = performance.now();
     if (guard.crashed) return false;
     frameTimes.push(t1 - t0);
     if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
     simTime.textContent = `${demo.time_s().toFixed(3)} s`;
+    const behind = demo.behind_s();
+    simTime.classList.toggle('behind', behind > BEHIND_S);
+    simTime.title = behind > BEHIND_S ? t('clock.behind', { s: behind.toFixed(2) }) : '';
     const components = JSON.parse(demo.components_json());
     systemBar.update(components);
     rtc.update(components);
@@ -97,12 +119,14 @@ async function boot() {
     timeline.update();
     toolbar.update();
     legend.update(app.stage.robotBox);
+    exercise.update(t1);
     app.notice.update(app.stage.robotBox);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();
     params.update(now, tabs.visible('params'));
     inspector.update(now, tabs.visible('inspector'));
     plots.update(now, tabs.visible('plots'));
+    system.update(now, tabs.visible('system'), components);
     return !guard.crashed;
   });
   guard.onCrash(() => loop.stop());
@@ -113,9 +137,11 @@ async function boot() {
     app,
     scenarios,
     tabs,
+    exercise,
     inspector,
     timeline,
     compare,
+    system,
     /** Frame times (step + render + blit) of the last frames, ms. */
     frameTimes: () => frameTimes.slice(),
     clearFrameTimes: () => { frameTimes.length = 0; },
@@ -131,9 +157,8 @@ async function boot() {
 
 boot().catch((e) => {
   const box = $('crash');
-  box.querySelector('h2').textContent = 'The demo could not start';
-  box.querySelector('p').textContent =
-    'Could not load the WebAssembly module or the scenarios. Build them with `cargo xtask demo`.';
+  box.querySelector('h2').textContent = t('crash.boot.title');
+  box.querySelector('p').textContent = t('crash.boot.text');
   $('crash-message').textContent = String(e && e.stack ? e.stack : e);
   box.hidden = false;
 });

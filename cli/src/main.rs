@@ -10,9 +10,17 @@
 //! rtnav compare fixtures/scenarios/parking_wall.json \
 //!     --a LocalPathPlanning.PostureConsiderationLevel=0 \
 //!     --b LocalPathPlanning.PostureConsiderationLevel=85 --png compare.png
+//! rtnav check fixtures/scenarios/ex_door_dmin.json --conf my.conf   # exit 0 pass, 1 fail
+//! rtnav system fixtures/scenarios/open_field.json --dot | dot -Tsvg > system.svg
+//! rtnav system fixtures/scenarios/open_field.json --json --until 5
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
 //! rtnav soak --hours 24 --scenario fixtures/scenarios/willow_garage.json
 //! ```
+//!
+//! `system` prints the system's own description (`rtnav::system::SystemGraph`): the
+//! components, their data and service ports with types, and the connections, as Graphviz
+//! `dot` or as JSON; with `--until` after running the scenario that long, so the JSON holds
+//! each port's newest sample and each service port's last call.
 //!
 //! `fuzz` and `soak` are the reliability tools of issue 18 (`rtnav_cli::fuzz`,
 //! `rtnav_cli::soak`); `cargo xtask fuzz` and `cargo xtask soak` run them in release mode.
@@ -37,7 +45,7 @@ use rtnav::data::RepoResolver;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
     BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
-    System, setup,
+    System, Verdict, check_exercise, setup,
 };
 use rtnav_cli::{alloc, fuzz, soak};
 
@@ -151,6 +159,40 @@ enum Command {
         #[arg(long, default_value = "1200x800", value_parser = parse_size)]
         size: (u32, u32),
     },
+    /// Do a scenario's exercise with a configuration handed in and print the checklist and
+    /// the verdict. Exits 0 when every check passes, 1 when one fails.
+    Check {
+        /// The scenario file (JSON) with an exercise.
+        scenario: PathBuf,
+        /// The student's configuration: an OpenRTM `.conf` bundle as the page saves it
+        /// (components or parameters left out keep the scenario's values).
+        #[arg(long)]
+        conf: Option<PathBuf>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+        /// Print the result as one line of JSON instead.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Print the system's description — components, ports, types, connections — as
+    /// Graphviz dot (default) or JSON.
+    System {
+        /// The scenario file (JSON).
+        scenario: PathBuf,
+        /// Graphviz dot (the default).
+        #[arg(long, conflicts_with = "json")]
+        dot: bool,
+        /// JSON: components, ports with their types and newest samples, connections.
+        #[arg(long)]
+        json: bool,
+        /// Run the scenario this long [s] first (else: as set up, before it drives).
+        #[arg(long)]
+        until: Option<f64>,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+    },
     /// Fuzz the readers and the hostile calls: mutated fixture inputs and generated ones,
     /// each checked for panics, time (1 s), allocation bounds and refused calls that change
     /// something. Prints, per target, the inputs tried, the failures and the slowest input.
@@ -255,6 +297,19 @@ fn main() -> ExitCode {
             root,
             size,
         } => replay_cmd::compare_cmd(&scenario, &a, &b, png.as_deref(), root, size),
+        Command::Check {
+            scenario,
+            conf,
+            root,
+            json,
+        } => check(&scenario, conf.as_deref(), root, json),
+        Command::System {
+            scenario,
+            dot: _,
+            json,
+            until,
+            root,
+        } => describe(&scenario, json, until, root),
         Command::Fuzz {
             seconds,
             cases,
@@ -464,6 +519,71 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
         .map_err(|e| e.to_string())?;
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
+    Ok(ExitCode::SUCCESS)
+}
+
+fn check(
+    path: &Path,
+    conf: Option<&Path>,
+    root: Option<PathBuf>,
+    json: bool,
+) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let text = match conf {
+        Some(p) => Some(
+            std::fs::read_to_string(p)
+                .map_err(|e| format!("cannot read `{}`: {e}", p.display()))?,
+        ),
+        None => None,
+    };
+    let status =
+        check_exercise(&scenario, &resolver, text.as_deref(), &[]).map_err(|e| e.to_string())?;
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string(&status).map_err(|e| e.to_string())?
+        );
+    } else {
+        println!("scenario {}", scenario.name);
+        println!("{status}");
+    }
+    Ok(if status.verdict == Verdict::Passed {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+fn describe(
+    path: &Path,
+    json: bool,
+    until: Option<f64>,
+    root: Option<PathBuf>,
+) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(path, root)?;
+    let graph = match until {
+        Some(t) => {
+            let mut run = ScenarioRun::new(&scenario, &resolver).map_err(|e| e.to_string())?;
+            run.set_limit(t).map_err(|e| e.to_string())?;
+            while run.advance(1000).is_none() {}
+            run.system().wiring().graph()
+        }
+        None => setup::build(
+            &scenario,
+            &resolver,
+            &Setup::of(&scenario),
+            BuildOptions::default(),
+        )
+        .map_err(|e| e.to_string())?
+        .wiring()
+        .graph(),
+    };
+    if json {
+        let text = serde_json::to_string_pretty(&graph).map_err(|e| e.to_string())?;
+        println!("{text}");
+    } else {
+        print!("{}", graph.to_dot());
+    }
     Ok(ExitCode::SUCCESS)
 }
 

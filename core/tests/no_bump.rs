@@ -149,6 +149,7 @@ fn drive_pairs(yaml: &str, n: usize, seed: u64) {
                 min_replans: 0,
                 planner: None,
             },
+            exercise: None,
         };
         let mut run = ScenarioRun::new(&scenario, &resolver).unwrap();
         run.run_to_end();

@@ -9,6 +9,7 @@ use rtnav::render::{Layers, Renderer, caption};
 use rtnav::rtc::LifecycleState;
 use rtnav::system::{
     ComponentInfo, ComponentKind, EventKind, Input, MapSource, MemoryResolver, Scenario, Session,
+    Telemetry,
 };
 
 fn root() -> &'static Path {
@@ -315,4 +316,51 @@ fn an_exported_conf_reimported_gives_the_same_configuration() {
     let e = s.apply(&load(&bad)).unwrap_err().to_string();
     assert!(e.contains("MaxVelocity") && e.contains("line"), "{e}");
     assert_eq!(s.parameters_view(), original);
+}
+
+#[test]
+fn a_frame_budget_cuts_the_time_but_not_the_trace() {
+    const UNTIL_S: f64 = 3.0;
+    const UNTIL_NS: u64 = 3_000_000_000;
+    let drive = |budget: Option<u64>| {
+        let mut s = loaded("open_field");
+        s.apply(&Input::ActivateAll).unwrap();
+        s.set_speed(16.0).unwrap();
+        let (mut frames, mut most_owed) = (0, 0.0_f64);
+        while s.system().time() < UNTIL_S {
+            frames += 1;
+            match budget {
+                None => {
+                    s.advance(16.0);
+                }
+                Some(n) => {
+                    // The page's `more()` reads the wall clock; a count of ticks stands in.
+                    let mut left = n;
+                    let ran = s.advance_while(16.0, || {
+                        left -= 1;
+                        left > 0
+                    });
+                    assert!(ran <= n, "{ran} ticks ran on a budget of {n}");
+                    most_owed = most_owed.max(s.behind_s());
+                }
+            }
+        }
+        let samples = s.system().record().telemetry().samples();
+        let hash = Telemetry::hash_of(samples.iter().filter(|x| x.time_ns <= UNTIL_NS));
+        (hash, frames, most_owed)
+    };
+    let (free, free_frames, _) = drive(None);
+    let (budgeted, budget_frames, most_owed) = drive(Some(50));
+    // 16 ms at 16× is 256 ticks a frame; at 50 ticks a frame the simulation runs slower ...
+    assert!(
+        budget_frames > 4 * free_frames,
+        "{budget_frames} frames against {free_frames}"
+    );
+    // ... owing at most one capped frame's time (100 ms × 16) ...
+    assert!(
+        most_owed > 1.0 && most_owed <= 1.6 + 1e-9,
+        "{most_owed} s owed at most"
+    );
+    // ... and runs the same ticks.
+    assert_eq!(budgeted, free, "the frame budget changed the trace");
 }

@@ -19,11 +19,11 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import {
   WAIT, launch, openPage, screenshot, plan, telemetry, mapInfo, cellToPage, showTab,
-  expectState, activateAll, logged, frames, json,
+  expectState, activateAll, logged, frames, json, layoutProblems,
 } from './helpers.mjs';
 
 const SIZES = [[1280, 800], [768, 1024], [390, 844]];
-const TABS = ['rtc', 'params', 'inspector', 'plots', 'log'];
+const TABS = ['rtc', 'system', 'params', 'inspector', 'plots', 'log'];
 
 let browser;
 before(async () => {
@@ -56,78 +56,6 @@ async function pick(page, name) {
 
 /** Hides a notice that is up (so it does not count in layout checks). */
 const dismiss = (page) => page.evaluate(() => window.rtnav.app.notice.hide());
-
-/**
- * In the page: every visible control and text block, and what is wrong with the layout —
- * wider than the window, a control outside the window or clipped by a box that hides
- * overflow, two overlapping, or one whose centre another element covers (a tap there would
- * not reach it).
- */
-function layoutProblems() {
-  const scrollers = [...document.querySelectorAll('*')].filter((e) => /auto|scroll/.test(getComputedStyle(e).overflowY));
-  const home = () => {
-    for (const e of scrollers) e.scrollTop = 0;
-    window.scrollTo(0, 0);
-  };
-  home();
-  const vw = document.documentElement.clientWidth;
-  const problems = [];
-  if (document.documentElement.scrollWidth > vw + 1) {
-    problems.push(`the page is wider than the window: ${document.documentElement.scrollWidth} > ${vw}`);
-  }
-  const name = (e) => (e.id ? `#${e.id}` : `${e.tagName.toLowerCase()}.${[...e.classList].join('.')} "${e.textContent.trim().slice(0, 24)}"`);
-  const shown = (e) => e.checkVisibility({ checkOpacity: true, checkVisibilityCSS: true })
-    && e.getBoundingClientRect().width > 0 && e.getBoundingClientRect().height > 0;
-  const CONTROLS = 'button, select, input:not([type="file"]), label.file-button, summary, [role="tab"]';
-  const BLOCKS = '.telemetry .field, .lesson, #tool-hint, .legend-box, .map-controls, #notice, #system-state';
-  const controls = [...document.querySelectorAll(CONTROLS)].filter(shown);
-  const items = [...new Set([...controls, ...document.querySelectorAll(BLOCKS)])].filter(shown);
-  /** The part of `e` its scrolling boxes show (null: scrolled out of sight, reachable by scrolling). */
-  const seen = new Map();
-  for (const e of items) {
-    const r = e.getBoundingClientRect();
-    let v = { left: r.left, right: r.right, top: r.top, bottom: r.bottom };
-    let inScroller = false;
-    if (r.left < -0.5 || r.right > vw + 0.5) problems.push(`${name(e)} is off-screen (${Math.round(r.left)}–${Math.round(r.right)} of ${vw})`);
-    for (let a = e.parentElement; a && a !== document.body; a = a.parentElement) {
-      const cs = getComputedStyle(a);
-      const over = `${cs.overflowX} ${cs.overflowY}`;
-      if (!/hidden|clip|auto|scroll/.test(over)) continue;
-      const ar = a.getBoundingClientRect();
-      if (/auto|scroll/.test(over)) {
-        inScroller = true;
-      } else if (r.left < ar.left - 0.5 || r.right > ar.right + 0.5 || r.top < ar.top - 0.5 || r.bottom > ar.bottom + 0.5) {
-        problems.push(`${name(e)} is cut off by ${name(a)}`);
-      }
-      v = { left: Math.max(v.left, ar.left), right: Math.min(v.right, ar.right), top: Math.max(v.top, ar.top), bottom: Math.min(v.bottom, ar.bottom) };
-    }
-    if (!inScroller && r.top + window.scrollY < -0.5) problems.push(`${name(e)} is above the page`);
-    seen.set(e, v.right - v.left > 1 && v.bottom - v.top > 1 ? v : null);
-  }
-  for (let i = 0; i < items.length; i++) {
-    for (let j = i + 1; j < items.length; j++) {
-      const [a, b] = [items[i], items[j]];
-      if (a.contains(b) || b.contains(a)) continue;
-      const p = seen.get(a);
-      const q = seen.get(b);
-      if (!p || !q) continue;
-      const w = Math.min(p.right, q.right) - Math.max(p.left, q.left);
-      const h = Math.min(p.bottom, q.bottom) - Math.max(p.top, q.top);
-      if (w > 1 && h > 1) problems.push(`${name(a)} overlaps ${name(b)} (${Math.round(w)}×${Math.round(h)} px)`);
-    }
-  }
-  // A tap at each control's centre reaches it.
-  for (const e of controls) {
-    e.scrollIntoView({ block: 'center', inline: 'center' });
-    const r = e.getBoundingClientRect();
-    const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
-    if (!hit || !(hit === e || e.contains(hit) || hit.contains(e) && hit.tagName === 'LABEL')) {
-      problems.push(`a tap on ${name(e)} reaches ${hit ? name(hit) : 'nothing'}`);
-    }
-  }
-  home();
-  return problems;
-}
 
 // ------------------------------------------------------------------------------------ (3)
 

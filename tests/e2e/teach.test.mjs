@@ -274,7 +274,7 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   const list = await params(page);
   const planned = await plan(page);
   const token = new URL(link).searchParams.get('share');
-  assert.equal(link, `${new URL(page.url()).origin}${new URL(page.url()).pathname}?share=${token}`);
+  assert.equal(link, `${new URL(page.url()).origin}${new URL(page.url()).pathname}?lang=en&share=${token}`, "the link carries the language (issue 17)");
   assert.match(token, /^[A-Za-z0-9_-]+$/, 'URL-safe');
 
   // The fresh page keeps a copy of the first frame it puts on the canvas.

@@ -22,6 +22,13 @@ use crate::views::{
 };
 use crate::{Msg, js, msg};
 
+#[wasm_bindgen]
+extern "C" {
+    /// The page's wall clock \[ms\]: for the frame budget only (simulated time never reads it).
+    #[wasm_bindgen(js_namespace = performance, js_name = now)]
+    fn performance_now() -> f64;
+}
+
 /// The reason an injected fault gives.
 const FAULT_REASON: &str = "requested from the page";
 
@@ -137,7 +144,12 @@ impl Inner {
 
     /// [`Session::advance`]. Returns the number of ticks run.
     pub(crate) fn step(&mut self, elapsed_ms: f64) -> u32 {
-        let ticks = self.session.advance(elapsed_ms);
+        self.step_while(elapsed_ms, || true)
+    }
+
+    /// [`step`](Self::step), asking `more()` after each tick ([`Session::advance_while`]).
+    pub(crate) fn step_while(&mut self, elapsed_ms: f64, more: impl FnMut() -> bool) -> u32 {
+        let ticks = self.session.advance_while(elapsed_ms, more);
         if ticks > 0 {
             self.dirty = true;
         }
@@ -469,6 +481,21 @@ impl Demo {
     /// nothing while paused. Returns the number of ticks run.
     pub fn step(&mut self, elapsed_ms: f64) -> u32 {
         self.0.step(elapsed_ms)
+    }
+
+    /// [`step`](Self::step) within `budget_ms` of wall time (`performance.now()`): the ticks
+    /// not run stay owed to the next frame, so an expensive tick (a plan on a large map) does
+    /// not freeze the page for the rest of the frame's simulated time
+    /// ([`Session::advance_while`]). Returns the number of ticks run.
+    pub fn step_within(&mut self, elapsed_ms: f64, budget_ms: f64) -> u32 {
+        let start = performance_now();
+        self.0
+            .step_while(elapsed_ms, || performance_now() - start < budget_ms)
+    }
+
+    /// Simulated time owed to the clock and not yet run \[s\] (behind the chosen speed).
+    pub fn behind_s(&self) -> f64 {
+        self.0.session.behind_s()
     }
 
     /// Runs `ticks` base ticks now, paused or not (the page's single step: one tick).

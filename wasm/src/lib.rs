@@ -19,8 +19,10 @@ use std::sync::Mutex;
 use wasm_bindgen::prelude::*;
 
 mod demo;
+mod exercise;
 mod files;
 mod replay;
+mod system_view;
 mod teach;
 mod views;
 

@@ -70,6 +70,7 @@ impl EventView {
             | EventKind::Cleared
             | EventKind::ClearanceWarning { .. }
             | EventKind::SafetyStop { .. }
+            | EventKind::ConnectionCut { .. }
             | EventKind::RequestRefused { .. } => "warn",
             EventKind::Arrived { .. } => "success",
             _ => "info",

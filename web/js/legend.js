@@ -3,19 +3,20 @@
 // It folds away (a <details>, folded at first) and is kept small: never more than about 15 %
 // of the map (on a narrow screen it sits under the map). The colours are the renderer's (`render::style`).
 import { el, setText } from './dom.js';
+import { t } from './i18n.js';
 
 /** [layer, label, how the swatch looks (a CSS class)]. */
 const ENTRIES = [
-  ['occupancy', 'obstacle', 'sw-obstacle'],
-  ['dmin_zone', 'dmin zone', 'sw-dmin'],
-  ['global_path', 'global path', 'sw-global'],
-  ['local_path', 'local path', 'sw-local'],
-  ['trail', 'trail', 'sw-trail'],
-  ['control_points', 'control point', 'sw-control'],
-  ['local_target', 'local target', 'sw-target'],
-  ['robot', 'robot', 'sw-robot'],
-  ['start_goal', 'start', 'sw-start'],
-  ['start_goal', 'goal', 'sw-goal'],
+  ['occupancy', t('legend.obstacle'), 'sw-obstacle'],
+  ['dmin_zone', t('legend.dmin_zone'), 'sw-dmin'],
+  ['global_path', t('legend.global_path'), 'sw-global'],
+  ['local_path', t('legend.local_path'), 'sw-local'],
+  ['trail', t('legend.trail'), 'sw-trail'],
+  ['control_points', t('legend.control_point'), 'sw-control'],
+  ['local_target', t('legend.local_target'), 'sw-target'],
+  ['robot', t('legend.robot'), 'sw-robot'],
+  ['start_goal', t('legend.start'), 'sw-start'],
+  ['start_goal', t('legend.goal'), 'sw-goal'],
 ];
 /** The scale bar's longest length, CSS pixels. */
 const SCALE_MAX_PX = 70;
@@ -89,7 +90,7 @@ export function createLegend(details, body, canvas, app) {
         lastRange = key;
         heat.classList.toggle('empty', !range);
         setText(lo, range ? short(range[0]) : '—');
-        setText(hi, range ? `${range[2] ? '>' : ''}${short(range[1])}` : 'no field');
+        setText(hi, range ? `${range[2] ? '>' : ''}${short(range[1])}` : t('legend.no_field'));
       }
       // The scale bar: the longest 1-2-5 length in metres within SCALE_MAX_PX.
       const rect = canvas.getBoundingClientRect();

@@ -8,6 +8,7 @@
 // are applied (`apply_share`). A bad link is explained and the default scenario shown.
 import { Demo, Files } from '../pkg/rtnav_wasm.js';
 import { el } from './dom.js';
+import { t, has } from './i18n.js';
 
 const INDEX_URL = 'fixtures/index.json';
 /** MovingAI maps have no cell size: they are read at this many metres per cell. */
@@ -20,23 +21,29 @@ async function fetchOk(url, how) {
   return how === 'text' ? r.text() : new Uint8Array(await r.arrayBuffer());
 }
 
+/** A scenario's `description` or `lesson` in the page's language (the file's own is English). */
+function scenarioText(s, what) {
+  const key = `scenario.${s.name}.${what}`;
+  return has(key) ? t(key) : s[what];
+}
+
 export function createScenarios(dom, app) {
   const { demo } = app;
   let index = { default: null, scenarios: [] };
-  const custom = el('option', { value: CUSTOM, disabled: true }, 'Map file');
+  const custom = el('option', { value: CUSTOM, disabled: true }, t('scenarios.map_file'));
   let current = null;
 
   function showAbout() {
     const s = JSON.parse(demo.scenario_json());
     const map = JSON.parse(demo.map_json());
     if (s) {
-      dom.title.textContent = `About this scenario: ${s.name.replaceAll('_', ' ')}`;
-      dom.description.textContent = s.description;
-      showLesson(s.lesson);
+      dom.title.textContent = t('scenarios.about', { name: s.name.replaceAll('_', ' ') });
+      dom.description.textContent = scenarioText(s, 'description');
+      showLesson(scenarioText(s, 'lesson'));
     } else {
-      dom.title.textContent = `Map file: ${map?.name ?? ''}`;
+      dom.title.textContent = t('scenarios.map_file_named', { name: map?.name ?? '' });
       dom.description.textContent = map
-        ? `${map.width}×${map.height} cells of ${map.grid_size} m. Place the robot with the Start tool, then drag a goal, then Activate all.`
+        ? t('scenarios.map_about', { width: map.width, height: map.height, grid: map.grid_size })
         : '';
       showLesson('');
     }
@@ -44,7 +51,7 @@ export function createScenarios(dom, app) {
 
   /** The scenario's lesson, prominent: "Try this: …". */
   function showLesson(text) {
-    dom.lesson.replaceChildren(el('strong', {}, 'Try this'), ' ', text ?? '');
+    dom.lesson.replaceChildren(el('strong', {}, t('scenarios.try_this')), ' ', text ?? '');
     dom.lesson.hidden = !text;
   }
 
@@ -68,7 +75,7 @@ export function createScenarios(dom, app) {
   async function load(name, share = null) {
     const entry = index.scenarios.find((s) => s.name === name);
     if (!entry) {
-      app.notice.show(`No scenario named ${name}.`, 'error');
+      app.notice.show(t('scenarios.no_such', { name }), 'error');
       return false;
     }
     const files = new Files();
@@ -85,8 +92,8 @@ export function createScenarios(dom, app) {
         if (!s.ok) return { shareError: s.error };
       }
     } catch (e) {
-      app.notice.show(`Could not load scenario ${name}: ${e.message ?? e}. The current one stays.`, 'error');
-      app.log.page(`Scenario ${name} not loaded: ${e.message ?? e}`, 'error');
+      app.notice.show(t('scenarios.load_failed', { name, error: e.message ?? e }), 'error');
+      app.log.page(t('scenarios.not_loaded', { name, error: e.message ?? e }), 'error');
       dom.select.value = current ?? CUSTOM;
       return false;
     } finally {
@@ -98,8 +105,8 @@ export function createScenarios(dom, app) {
     // (and of a share link) is the set-up at its own time.
     app.stage.draw();
     loaded(share === null
-      ? `Scenario ${name} loaded. Press Activate all to drive.`
-      : `Shared set-up of scenario ${name} loaded (its start, goal, map edits and parameters). Press Activate all to drive.`);
+      ? t('scenarios.loaded', { name })
+      : t('scenarios.shared_loaded', { name }));
     return true;
   }
 
@@ -113,11 +120,11 @@ export function createScenarios(dom, app) {
     }
     if (name === undefined) return false;
     if (!index.scenarios.some((s) => s.name === name)) {
-      return refuseShare(`it is made for the scenario ${name}, which this page does not have`);
+      return refuseShare(t('scenarios.share_unknown', { name }));
     }
     const r = await load(name, token);
     if (r === true) {
-      app.notice.show(`Shared set-up of ${name.replaceAll('_', ' ')} loaded.`, 'success');
+      app.notice.show(t('scenarios.shared_notice', { name: name.replaceAll('_', ' ') }), 'success');
       return true;
     }
     if (r && r.shareError) return refuseShare(r.shareError);
@@ -126,7 +133,7 @@ export function createScenarios(dom, app) {
 
   let shareRefusal = null;
   function refuseShare(reason) {
-    shareRefusal = `This share link cannot be used: ${reason}. The default scenario is shown instead.`;
+    shareRefusal = t('scenarios.share_refused', { reason });
     app.notice.show(shareRefusal, 'error');
     return false;
   }
@@ -139,8 +146,8 @@ export function createScenarios(dom, app) {
       names.forEach((n, i) => files.add(n, bytes[i]));
       const r = app.attempt(() => demo.load_map_files(files, MOVINGAI_CELL_M));
       if (!r.ok) {
-        app.notice.show(`Could not load the map: ${r.error}. The current map stays.`, 'error');
-        app.log.page(`Map file refused: ${r.error}`, 'error');
+        app.notice.show(t('scenarios.map_refused', { error: r.error }), 'error');
+        app.log.page(t('refused', { what: t('scenarios.map_file'), error: r.error }), 'error');
         return false;
       }
     } finally {
@@ -149,10 +156,10 @@ export function createScenarios(dom, app) {
     current = null;
     dom.select.value = CUSTOM;
     const map = JSON.parse(demo.map_json());
-    custom.textContent = `Map file: ${map.name}`;
+    custom.textContent = t('scenarios.map_file_named', { name: map.name });
     app.emit('tool', 'start');
-    loaded(`Map ${map.name} loaded: ${map.width}×${map.height} cells of ${map.grid_size} m.`);
-    app.notice.show(`Map ${map.name} loaded. Place the robot with the Start tool, then drag a goal.`, 'success');
+    loaded(t('scenarios.map_loaded', { name: map.name, width: map.width, height: map.height, grid: map.grid_size }));
+    app.notice.show(t('scenarios.map_loaded_notice', { name: map.name }), 'success');
     return true;
   }
 
@@ -174,7 +181,7 @@ export function createScenarios(dom, app) {
     async loadDefault(share = null) {
       index = JSON.parse(await fetchOk(INDEX_URL, 'text'));
       dom.select.replaceChildren(
-        ...index.scenarios.map((s) => el('option', { value: s.name, title: s.description }, s.name.replaceAll('_', ' '))),
+        ...index.scenarios.map((s) => el('option', { value: s.name, title: scenarioText(s, 'description') }, s.name.replaceAll('_', ' '))),
         custom,
       );
       if (share !== null && await loadShared(share)) return;

@@ -12,13 +12,14 @@
 // right mouse button, or two fingers drag the picture; Fit shows the whole map again.
 // A paint stroke is one MapUpdate, sent when the stroke ends (issue 15): the cells under the
 // brush are gathered while it moves and previewed on the overlay.
+import { t } from './i18n.js';
 
 const TOOL_HINTS = {
-  goal: 'Goal: press where the robot should go and drag toward the heading it should end with.',
-  start: 'Start: press where the robot should stand and drag toward its heading (while it is not driving).',
-  paint: 'Obstacle: paint cells, even while the robot drives: one stroke is one MapUpdate, sent when you let go.',
-  erase: 'Erase: free cells (one stroke is one MapUpdate with value 0).',
-  pan: 'Pan: drag the picture (also the middle or right mouse button, or two fingers). Wheel or pinch to zoom.',
+  goal: t('hint.goal'),
+  start: t('hint.start'),
+  paint: t('hint.paint'),
+  erase: t('hint.erase'),
+  pan: t('hint.pan'),
 };
 const COLOURS = { goal: '#e8590c', start: '#1c7ed6', paint: '#212529', erase: '#f8f9fa' };
 /** Zoom per wheel pixel (a notch of 100 px zooms about 1.16×). */
@@ -59,7 +60,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     if (view.width === w && view.height === h) return;
     const r = app.attempt(() => demo.resize(w, h));
     if (!r.ok) {
-      app.notice.show(`Cannot draw at ${w}×${h}: ${r.error}`, 'error');
+      app.notice.show(t('stage.cannot_draw', { w, h, error: r.error }), 'error');
       return;
     }
     view.width = overlay.width = w;
@@ -90,7 +91,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   function draw() {
     const r = app.attempt(() => demo.render());
     if (!r.ok) {
-      app.notice.show(`Drawing failed: ${r.error}`, 'error');
+      app.notice.show(t('stage.draw_failed', { error: r.error }), 'error');
       return;
     }
     if (r.value) drawn = true;
@@ -114,8 +115,8 @@ export function createStage(wrap, view, overlay, hint, app) {
   const fmt = (p) => `(${p.x.toFixed(2)} m, ${p.y.toFixed(2)} m, ${Math.round(p.theta_deg)}°)`;
 
   function refused(what, error, kept) {
-    app.notice.show(`${what} refused: ${error}. ${kept}`, 'error');
-    app.log.page(`${what} refused: ${error}`, 'warn');
+    app.notice.show(t('refused.kept', { what, error, kept }), 'error');
+    app.log.page(t('refused', { what, error }), 'warn');
   }
 
   /** A new goal: from the robot while it drives, else from its start (or a waiting start). */
@@ -126,11 +127,11 @@ export function createStage(wrap, view, overlay, hint, app) {
       ? app.attempt(() => demo.set_position(ps.x, ps.y, ps.theta_deg, goal.x, goal.y, goal.theta_deg, app.ui.backward))
       : app.attempt(() => demo.set_goal(goal.x, goal.y, goal.theta_deg, app.ui.backward));
     if (!r.ok) {
-      refused('Goal', r.error, 'The previous goal and its path are kept.');
+      refused(t('stage.goal'), r.error, t('stage.goal_kept'));
       return false;
     }
     app.ui.pendingStart = null;
-    app.notice.show(`Goal set at ${fmt(goal)}, driving ${app.ui.backward ? 'backward' : 'forward'}.`, 'success');
+    app.notice.show(t('stage.goal_set', { at: fmt(goal), dir: t(app.ui.backward ? 'stage.backward' : 'stage.forward') }), 'success');
     drawOverlay();
     return true;
   }
@@ -138,24 +139,24 @@ export function createStage(wrap, view, overlay, hint, app) {
   /** Places the robot (SetPosition with the current goal); without a goal, waits for one. */
   function setStart(start) {
     if (telemetry().driving) {
-      app.notice.show('The robot is driving: deactivate it (Deactivate all) before placing it again.', 'warn');
+      app.notice.show(t('stage.driving'), 'warn');
       return false;
     }
     const goal = plan().goal;
     if (!goal) {
       app.ui.pendingStart = start;
       app.emit('tool', 'goal');
-      app.notice.show(`Start placed at ${fmt(start)}. Now drag the goal.`, 'info');
+      app.notice.show(t('stage.start_placed', { at: fmt(start) }), 'info');
       drawOverlay();
       return true;
     }
     const r = app.attempt(() =>
       demo.set_position(start.x, start.y, start.theta_deg, goal.x, goal.y, goal.theta_deg, app.ui.backward));
     if (!r.ok) {
-      refused('Start', r.error, 'The robot stays where it was.');
+      refused(t('stage.start'), r.error, t('stage.start_kept'));
       return false;
     }
-    app.notice.show(`Robot placed at ${fmt(start)}.`, 'success');
+    app.notice.show(t('stage.placed', { at: fmt(start) }), 'success');
     return true;
   }
 
@@ -168,9 +169,9 @@ export function createStage(wrap, view, overlay, hint, app) {
       ? app.attempt(() => demo.set_goal(g.x, g.y, g.theta_deg, app.ui.backward))
       : app.attempt(() => demo.set_position(p.start.x, p.start.y, p.start.theta_deg, g.x, g.y, g.theta_deg, app.ui.backward));
     if (r.ok) {
-      app.notice.show(`Driving ${app.ui.backward ? 'backward' : 'forward'} to the goal.`, 'success');
+      app.notice.show(t('stage.driving_to', { dir: t(app.ui.backward ? 'stage.backward' : 'stage.forward') }), 'success');
     } else {
-      refused('Direction', r.error, 'The previous goal and its path are kept.');
+      refused(t('stage.direction'), r.error, t('stage.goal_kept'));
     }
   }
 
@@ -236,7 +237,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     const ys = Int32Array.from(cells, (c) => c[1]);
     const value = tool === 'paint' ? 1 : 0;
     const r = app.attempt(() => demo.set_cells(xs, ys, value));
-    if (!r.ok) app.notice.show(`MapUpdate refused: ${r.error}`, 'error');
+    if (!r.ok) app.notice.show(t('refused', { what: 'MapUpdate', error: r.error }), 'error');
     app.emit('changed');
   }
 

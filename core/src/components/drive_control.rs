@@ -31,8 +31,8 @@ use crate::interfaces::{ControlPoints, Pose};
 use crate::map::{GridMap, MapUpdate};
 use crate::motion::{DrivePhase, PurePursuit, PursuitParams, free_travel};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDouble,
-    TimedPosition, TimedVelocity,
+    Component, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
+    TimedDouble, TimedPosition, TimedVelocity,
 };
 
 /// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, spec §4).
@@ -382,6 +382,16 @@ impl Component for DriveControl {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![
+            self.in_control_points.view(),
+            self.in_current_position.view(),
+            self.target_velocity.view(),
+            self.out_deviating.view(),
+            self.safety_stop.view(),
+        ]
     }
 
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

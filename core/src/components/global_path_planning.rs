@@ -34,7 +34,8 @@ use crate::global::{AStar, GridPlan, OctileCost};
 use crate::interfaces::{GlobalPathCourse, PlanningFailure, Pose};
 use crate::map::{Cell, GridMap, MapUpdate, escape_route};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick, TimedPosition,
+    Component, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
+    TimedPosition,
 };
 
 crate::define_parameters! {
@@ -302,6 +303,14 @@ impl Component for GlobalPathPlanning {
 
     fn instance_name(&self) -> &str {
         &self.instance_name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![
+            self.in_current_position.view(),
+            self.global_path_course.view(),
+            self.planning_failure.view(),
+        ]
     }
 
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

@@ -21,8 +21,8 @@ use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::motion::{DiffDrive, Odometry, wrap_angle};
 use crate::rtc::{
-    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
-    TimedDoubleSeq, TimedPosition,
+    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
+    Tick, TimedDoubleSeq, TimedPosition,
 };
 
 /// Where the published pose comes from (`LocalizationMode`).
@@ -216,6 +216,14 @@ impl Component for Localization {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![
+            self.in_simulated_position.view(),
+            self.in_current_wheel_angle.view(),
+            self.out_current_position.view(),
+        ]
     }
 
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

@@ -15,7 +15,7 @@
 use std::rc::Rc;
 
 use crate::map::GridMap;
-use crate::rtc::{Component, OutPort, Time};
+use crate::rtc::{Component, OutPort, PortView, Time};
 
 /// What MapBuilder sends on `SetMap`: the whole map, shared (the consumers copy what they
 /// keep).
@@ -96,6 +96,10 @@ impl Component for MapBuilder {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![self.set_map.view()]
     }
 }
 

@@ -15,7 +15,7 @@
 
 use crate::errors::SystemError;
 use crate::map::{GridMap, MapUpdate};
-use crate::rtc::{Component, OutPort};
+use crate::rtc::{Component, OutPort, PortView};
 
 /// The MapMaintenance RT-component.
 #[derive(Debug, Clone)]
@@ -83,6 +83,10 @@ impl Component for MapMaintenance {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![self.map_update_out.view()]
     }
 }
 

@@ -22,6 +22,7 @@ pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams, Pla
 
 mod map_builder;
 mod map_maintenance;
+mod samples;
 
 pub use map_builder::{MapBuilder, SetMapMessage};
 pub use map_maintenance::MapMaintenance;

@@ -22,8 +22,8 @@ use crate::interfaces::Pose;
 use crate::motion::{DiffDrive, ModelFrame};
 use crate::present::number;
 use crate::rtc::{
-    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
-    Time, TimedDoubleSeq, TimedVelocity,
+    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
+    Tick, Time, TimedDoubleSeq, TimedVelocity,
 };
 
 /// How long without a new target velocity (or new wheel angles) before the safe stop:
@@ -687,6 +687,18 @@ impl Component for MotorControl {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![
+            self.target_velocity.view(),
+            self.in_current_wheel_angle.view(),
+            self.in_simulated_position.view(),
+            self.torque.view(),
+            self.out_current_wheel_angle.view(),
+            self.out_simulated_position_to_invent_gui.view(),
+            self.out_simulated_position_to_localization.view(),
+        ]
     }
 
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

@@ -26,8 +26,8 @@ use crate::motion::{
     Physics, PhysicsParams, STEP_NS,
 };
 use crate::rtc::{
-    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
-    Time, TimedDoubleSeq,
+    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
+    Tick, Time, TimedDoubleSeq,
 };
 
 define_parameters! {
@@ -265,6 +265,15 @@ impl Component for PhysicsSim {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![
+            self.torque.view(),
+            self.angle.view(),
+            self.position.view(),
+            self.bump.view(),
+        ]
     }
 
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

@@ -5,6 +5,7 @@ use core::fmt;
 
 use super::config::ConfigAccess;
 use super::idl::Time;
+use super::sample::PortView;
 
 /// Why a callback failed; the GUI shows `reason` (spec §1: "A callback fails by returning an
 /// error value (with a reason that the GUI shows)").
@@ -98,6 +99,12 @@ pub trait Component: Any {
     /// The same configuration, to read (the GUI's parameter panel, `.conf` export).
     fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
         None
+    }
+
+    /// Its data ports, in and out, with their newest samples (RT System Editor's view of
+    /// the component; the system's description, `crate::system::SystemGraph`).
+    fn ports(&self) -> Vec<PortView> {
+        Vec::new()
     }
 
     /// Once, when the component is created.

@@ -1,5 +1,5 @@
 //! The OpenRTM-style component model (spec §1, seed 003): lifecycle, execution context,
-//! data ports, IDL types and configuration.
+//! data ports (and what they show of themselves), IDL types and configuration.
 
 mod error;
 pub use error::{ConfigError, LifecycleError, TimestampError};
@@ -10,6 +10,7 @@ mod config;
 mod execution_context;
 mod idl;
 mod port;
+mod sample;
 mod state;
 
 pub use component::{Component, ComponentError, ReturnCode, Tick};
@@ -20,5 +21,6 @@ pub use config::{
 };
 pub use execution_context::{ComponentId, ExecutionContext, InputInjection, LifecycleEvent};
 pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
-pub use port::{InPort, OutPort};
+pub use port::{Connector, InPort, OutPort};
+pub use sample::{PortDirection, PortView, Sample, SampleView, short, short_list};
 pub use state::{ContextState, LifecycleState, Request};

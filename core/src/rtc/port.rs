@@ -1,17 +1,64 @@
 //! Data ports: `OutPort<T>` writes to every connected `InPort<T>` (spec §1 "Ports").
 //!
+//! Each connection has a [`Connector`]: the system's handle on it, which counts the samples
+//! it carried and can cut it (no sample passes until it is restored), as RT System Editor
+//! deletes and re-creates a connector.
+//!
 //! **Decision**: an InPort holds the newest value only (OpenRTM's buffer of length one with
 //! overwrite), which is what the seeds' `isNew()` / `read()` pattern needs. Ports are
 //! single-threaded (`Rc<RefCell<…>>`): the whole system runs in one execution context.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::fmt;
 use std::rc::Rc;
+
+use super::sample::{PortDirection, PortView, Sample, SampleView};
 
 #[derive(Debug)]
 struct Slot<T> {
     value: Option<T>,
     new: bool,
+    /// Samples written into it so far.
+    received: u64,
+}
+
+#[derive(Debug, Default)]
+struct Gate {
+    cut: Cell<bool>,
+    carried: Cell<u64>,
+}
+
+/// The handle on one connection `OutPort → InPort` ([`OutPort::connect`]): how many samples
+/// it carried, and whether it is cut.
+#[derive(Debug, Clone)]
+pub struct Connector(Rc<Gate>);
+
+impl Connector {
+    /// Samples that went through it.
+    pub fn carried(&self) -> u64 {
+        self.0.carried.get()
+    }
+
+    /// Whether it is cut: the out-port's writes do not reach the in-port.
+    pub fn is_cut(&self) -> bool {
+        self.0.cut.get()
+    }
+
+    /// Cuts it (`true`) or restores it (`false`).
+    pub fn set_cut(&self, cut: bool) {
+        self.0.cut.set(cut);
+    }
+
+    /// Takes over `other`'s count and cut (the same connection in a copied system).
+    pub fn copy_state_from(&self, other: &Connector) {
+        self.0.cut.set(other.is_cut());
+        self.0.carried.set(other.carried());
+    }
+}
+
+struct Link<T> {
+    slot: Rc<RefCell<Slot<T>>>,
+    gate: Connector,
 }
 
 /// An input data port.
@@ -28,6 +75,7 @@ impl<T> InPort<T> {
             slot: Rc::new(RefCell::new(Slot {
                 value: None,
                 new: false,
+                received: 0,
             })),
         }
     }
@@ -54,6 +102,26 @@ impl<T> InPort<T> {
         let mut s = self.slot.borrow_mut();
         s.value = Some(value);
         s.new = true;
+        s.received += 1;
+    }
+
+    /// Samples received so far.
+    pub fn received_count(&self) -> u64 {
+        self.slot.borrow().received
+    }
+}
+
+impl<T: Sample> InPort<T> {
+    /// The port as RT System Editor shows it, with its newest sample (read or not).
+    pub fn view(&self) -> PortView {
+        let s = self.slot.borrow();
+        PortView {
+            name: self.name,
+            direction: PortDirection::In,
+            idl: T::IDL,
+            count: s.received,
+            last: s.value.as_ref().map(SampleView::of),
+        }
     }
 }
 
@@ -94,6 +162,7 @@ impl<T: Clone> Clone for InPort<T> {
             slot: Rc::new(RefCell::new(Slot {
                 value: s.value.clone(),
                 new: s.new,
+                received: s.received,
             })),
         }
     }
@@ -111,7 +180,7 @@ impl<T> fmt::Debug for InPort<T> {
 /// An output data port.
 pub struct OutPort<T> {
     name: &'static str,
-    connections: Vec<Rc<RefCell<Slot<T>>>>,
+    connections: Vec<Link<T>>,
     last: Option<T>,
     writes: u64,
 }
@@ -132,11 +201,22 @@ impl<T: Clone> OutPort<T> {
         self.name
     }
 
-    /// Connects this port to `input`: every later write reaches it.
-    pub fn connect(&mut self, input: &InPort<T>) {
-        if !self.connections.iter().any(|c| Rc::ptr_eq(c, &input.slot)) {
-            self.connections.push(Rc::clone(&input.slot));
+    /// Connects this port to `input`: every later write reaches it (while the connection is
+    /// not cut). Returns the connection's handle (the same one if they were connected).
+    pub fn connect(&mut self, input: &InPort<T>) -> Connector {
+        if let Some(link) = self
+            .connections
+            .iter()
+            .find(|c| Rc::ptr_eq(&c.slot, &input.slot))
+        {
+            return link.gate.clone();
         }
+        let gate = Connector(Rc::new(Gate::default()));
+        self.connections.push(Link {
+            slot: Rc::clone(&input.slot),
+            gate: gate.clone(),
+        });
+        gate
     }
 
     /// Number of connected InPorts.
@@ -144,12 +224,18 @@ impl<T: Clone> OutPort<T> {
         self.connections.len()
     }
 
-    /// Sends `value` to every connected InPort and keeps it as [`OutPort::last`].
+    /// Sends `value` to every connected InPort (but through a cut connection) and keeps it
+    /// as [`OutPort::last`].
     pub fn write(&mut self, value: T) {
         for c in &self.connections {
-            let mut s = c.borrow_mut();
+            if c.gate.is_cut() {
+                continue;
+            }
+            let mut s = c.slot.borrow_mut();
             s.value = Some(value.clone());
             s.new = true;
+            s.received += 1;
+            c.gate.0.carried.set(c.gate.carried() + 1);
         }
         self.last = Some(value);
         self.writes += 1;
@@ -176,6 +262,19 @@ impl<T: Clone> Clone for OutPort<T> {
             connections: Vec::new(),
             last: self.last.clone(),
             writes: self.writes,
+        }
+    }
+}
+
+impl<T: Clone + Sample> OutPort<T> {
+    /// The port as RT System Editor shows it, with the last sample written.
+    pub fn view(&self) -> PortView {
+        PortView {
+            name: self.name,
+            direction: PortDirection::Out,
+            idl: T::IDL,
+            count: self.writes,
+            last: self.last.as_ref().map(SampleView::of),
         }
     }
 }
@@ -235,5 +334,26 @@ mod tests {
         out2.write(3);
         assert_eq!(a.read(), Some(2));
         assert_eq!(a2.read(), Some(3));
+    }
+
+    #[test]
+    fn a_cut_connection_carries_nothing_until_restored() {
+        let mut out = OutPort::new("Out");
+        let a = InPort::new("A");
+        let b = InPort::new("B");
+        let to_a = out.connect(&a);
+        let to_b = out.connect(&b);
+        assert_eq!(out.connect(&a).carried(), 0);
+        out.write(1);
+        to_a.set_cut(true);
+        out.write(2);
+        assert_eq!((a.read(), b.read()), (Some(1), Some(2)));
+        assert_eq!((to_a.carried(), to_b.carried()), (1, 2));
+        assert_eq!((a.received_count(), b.received_count()), (1, 2));
+        to_a.set_cut(false);
+        out.write(3);
+        assert_eq!(a.read(), Some(3));
+        assert_eq!(to_a.carried(), 2);
+        assert!(!to_a.is_cut());
     }
 }

@@ -18,6 +18,30 @@ pub enum SystemError {
         /// The ports that can be injected into.
         known: &'static str,
     },
+    /// A connection id that is not one of the system's data connections between components.
+    #[error("no connection `{id}` to cut or restore (connections: {known})")]
+    UnknownConnection {
+        /// The id given.
+        id: String,
+        /// The ids of the connections that can be cut.
+        known: String,
+    },
+    /// A connection to InventGUI: it carries the facts the log and the mission are made of.
+    #[error(
+        "`{id}` carries what InventGUI is told and cannot be cut (cut one between two components)"
+    )]
+    ConnectionKept {
+        /// The id given.
+        id: String,
+    },
+    /// A cut of a cut connection, or a restore of a connected one.
+    #[error("`{id}` is already {state}")]
+    ConnectionAlready {
+        /// The id given.
+        id: String,
+        /// `cut` or `connected`.
+        state: &'static str,
+    },
     /// A request that needs a map before one is loaded.
     #[error("{call}: no map is loaded")]
     NoMap {

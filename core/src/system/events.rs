@@ -184,6 +184,16 @@ pub enum EventKind {
         /// The port.
         port: String,
     },
+    /// A data connection was cut: its samples no longer reach the in-port.
+    ConnectionCut {
+        /// `DriveControl.TargetVelocity → MotorControl.TargetVelocity`.
+        connection: String,
+    },
+    /// A cut data connection was restored.
+    ConnectionRestored {
+        /// `DriveControl.TargetVelocity → MotorControl.TargetVelocity`.
+        connection: String,
+    },
 }
 
 impl fmt::Display for SystemEvent {
@@ -340,6 +350,12 @@ impl fmt::Display for EventKind {
             }
             EventKind::InputInjected { component, port } => {
                 write!(f, "a sample was injected into {component}.{port}")
+            }
+            EventKind::ConnectionCut { connection } => {
+                write!(f, "connection {connection} cut: no sample passes")
+            }
+            EventKind::ConnectionRestored { connection } => {
+                write!(f, "connection {connection} restored")
             }
         }
     }

@@ -106,6 +106,17 @@ pub enum Input {
         /// The rate.
         hz: f64,
     },
+    /// Cut a data connection between two components (RT System Editor's "delete
+    /// connector"): `DriveControl.TargetVelocity->MotorControl.TargetVelocity`.
+    CutConnection {
+        /// The connection's id, as the system's description names it.
+        connection: String,
+    },
+    /// Restore a cut data connection.
+    RestoreConnection {
+        /// The connection's id.
+        connection: String,
+    },
 }
 
 impl Input {
@@ -133,6 +144,8 @@ impl Input {
             Self::SetPdGain { .. } => "SetPDGain".to_owned(),
             Self::LoadConf { .. } => "loading the configuration".to_owned(),
             Self::SetRate { component, .. } => format!("the rate of {component}"),
+            Self::CutConnection { connection } => format!("cut {connection}"),
+            Self::RestoreConnection { connection } => format!("restore {connection}"),
         }
     }
 }

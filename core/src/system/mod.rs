@@ -10,6 +10,7 @@
 //! | [`Mission`] (`mission.rs`) | start, goal, direction, route, epochs, arrival, halt — followed from the facts | the record; it never calls a component |
 //! | [`Record`] (`record.rs`) | the event log, totals, trail, clearance, telemetry and trace hash — written from the reports | it never changes anything it observes |
 //! | [`System`] (`robot.rs`) | the three composed: [`System::apply`] (the one interpreter of [`Input`]), [`System::step`], [`System::run_until`] | clocks, scripts, previews, drawing buffers |
+//! | [`SystemGraph`] (`graph.rs`, from `links.rs`) | the system's description: components, ports, connections, last samples and calls | — |
 //! | [`Timeline`] (`timeline.rs`) | a scenario's timed events, counted from the drive's start | — |
 //! | [`setup::build`] (`setup.rs`) | the one set-up builder (runner, renderer, page, tests) | — |
 //! | [`ScenarioRun`] (`runner.rs`) | a headless run to its outcome | — |
@@ -70,10 +71,15 @@ mod compare;
 mod conf_bundle;
 mod error;
 mod events;
+mod exercise;
+mod exercise_run;
+mod exercise_watch;
+mod graph;
 mod history;
 mod input;
 mod inspect;
 mod kind;
+mod links;
 mod mission;
 mod rates;
 mod record;
@@ -92,6 +98,15 @@ pub use compare::{ComparePlots, Comparison, RunSummary, compare, setup_with};
 pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
+pub use exercise::{
+    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Verdict,
+    parameter_values,
+};
+pub use exercise_run::{DriveInput, ExerciseRun, check_exercise};
+pub use exercise_watch::ExerciseWatch;
+pub use graph::{
+    ConnectionKind, Endpoint, GraphComponent, GraphConnection, GraphPort, PortKind, SystemGraph,
+};
 pub use history::{
     CHECKPOINT_CELLS, CHECKPOINT_NS, CHECKPOINT_SAMPLES, MAX_CHECKPOINTS, Mark, MarkKind,
     TimelineView,
@@ -99,6 +114,7 @@ pub use history::{
 pub use input::Input;
 pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;
+pub use links::Peer;
 pub use mission::Mission;
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};

@@ -125,7 +125,9 @@ fn numbers_mut(input: &mut Input) -> Vec<&mut f64> {
         | Input::DeactivateAll
         | Input::ResetAll
         | Input::InjectFault { .. }
-        | Input::LoadConf { .. } => Vec::new(),
+        | Input::LoadConf { .. }
+        | Input::CutConnection { .. }
+        | Input::RestoreConnection { .. } => Vec::new(),
     }
 }
 

@@ -170,6 +170,8 @@ impl System {
                 }
                 Err(e) => Err(e.into()),
             },
+            Input::CutConnection { connection } => w.set_connection_cut(connection, true),
+            Input::RestoreConnection { connection } => w.set_connection_cut(connection, false),
         };
         self.settle();
         result

@@ -30,9 +30,10 @@
 //! | `direction` | `forward` (default) or `backward` (`SetPosition`'s `Direction`) |
 //! | `config` | per component (seed names, e.g. `LocalPathPlanning`), parameter (seed names, e.g. `RouteRemakeDistance`) → value |
 //! | `rates` | [`Rates`] (missing keys: defaults) |
-//! | `events` | timed, in seconds: `map_update` (`boxes` in metres — cells whose centre lies inside — and/or `cells` `[x, y]`; `value` 1 obstacle, 0 free; default 1), `goal` (a new goal from the robot's pose), `safe_mode`, `clear` |
+//! | `events` | timed, in seconds: `map_update` (`boxes` in metres — cells whose centre lies inside — and/or `cells` `[x, y]`; `value` 1 obstacle, 0 free; default 1), `goal` (a new goal from the robot's pose), `safe_mode`, `clear`, `fault` (`component`, `reason`: its next execution fails) |
 //! | `time_limit` | seconds of simulated time |
 //! | `expect` | [`Expectation`] |
+//! | `exercise` | optional: a task, the parameters that may change, checks ([`Exercise`]) |
 //!
 //! Paths are relative to the project's root (e.g. `fixtures/maps/…`,
 //! `../shared/data/rosmaps/…`); a [`FileResolver`] turns them into bytes.
@@ -42,7 +43,9 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
+use super::exercise::Exercise;
 use super::input::Input;
+use super::kind::ComponentKind;
 use super::rates::Rates;
 use crate::errors::ScenarioError;
 use crate::interfaces::{Direction, Pose};
@@ -81,6 +84,9 @@ pub struct Scenario {
     pub time_limit: f64,
     /// What should happen.
     pub expect: Expectation,
+    /// The exercise a student can do on it ([`Exercise`]), if any.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub exercise: Option<Exercise>,
 }
 
 /// Where the map comes from.
@@ -243,6 +249,15 @@ pub enum ScenarioEvent {
         /// Seconds.
         at: f64,
     },
+    /// A fault: `component`'s next execution fails with `reason` (seed 003's Error state).
+    Fault {
+        /// Seconds.
+        at: f64,
+        /// Which component.
+        component: ComponentKind,
+        /// The reason it fails with.
+        reason: String,
+    },
 }
 
 fn one() -> i16 {
@@ -256,7 +271,8 @@ impl ScenarioEvent {
             Self::MapUpdate { at, .. }
             | Self::Goal { at, .. }
             | Self::SafeMode { at }
-            | Self::Clear { at } => *at,
+            | Self::Clear { at }
+            | Self::Fault { at, .. } => *at,
         }
     }
 }
@@ -474,12 +490,17 @@ impl Scenario {
                         );
                     }
                 }
-                ScenarioEvent::SafeMode { .. } | ScenarioEvent::Clear { .. } => {}
+                ScenarioEvent::SafeMode { .. }
+                | ScenarioEvent::Clear { .. }
+                | ScenarioEvent::Fault { .. } => {}
             }
         }
         for component in self.config.keys() {
             super::ComponentKind::from_name(component)
                 .map_err(|e| self.err(format!("config: {e}")))?;
+        }
+        if let Some(exercise) = &self.exercise {
+            exercise.validate(&self.name)?;
         }
         if let MapSource::Movingai {
             grid_size, origin, ..
@@ -560,6 +581,12 @@ impl ScenarioEvent {
             },
             Self::SafeMode { .. } => Input::SafeMode,
             Self::Clear { .. } => Input::Clear,
+            Self::Fault {
+                component, reason, ..
+            } => Input::InjectFault {
+                component: *component,
+                reason: reason.clone(),
+            },
         }
     }
 }

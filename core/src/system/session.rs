@@ -30,6 +30,8 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
 use super::events::SystemEvent;
+use super::exercise::{ExerciseStatus, parameter_values};
+use super::exercise_watch::ExerciseWatch;
 use super::history::History;
 use super::input::Input;
 use super::kind::ComponentKind;
@@ -202,6 +204,8 @@ pub struct Session {
     events_seen: u64,
     /// The run's history (a scenario's; `None` for a map file).
     history: Option<History>,
+    /// The scenario's exercise being watched, if it has one.
+    exercise: Option<ExerciseWatch>,
 }
 
 /// Every [`TUNABLE`] parameter's requested value, by component and name.
@@ -219,6 +223,18 @@ fn parameters_of(system: &System) -> Parameters {
         }
     }
     out
+}
+
+/// The watch of `scenario`'s exercise over `system`, its rules from `base`'s parameters
+/// (the scenario as written).
+fn watch(scenario: &Scenario, base: &System, system: &System) -> Option<ExerciseWatch> {
+    let exercise = scenario.exercise.as_ref()?;
+    Some(ExerciseWatch::new(
+        exercise,
+        scenario.time_limit,
+        parameter_values(base),
+        system,
+    ))
 }
 
 /// The most a share token may inflate to \[bytes\] (16 MiB; a set-up is a few KiB).
@@ -250,6 +266,7 @@ impl Session {
             map_name: String::new(),
             events_seen: 0,
             history: None,
+            exercise: None,
         })
     }
 
@@ -330,6 +347,10 @@ impl Session {
 
     fn install(&mut self, system: System, source: Source) {
         self.baseline = parameters_of(&system);
+        self.exercise = match &source {
+            Source::Scenario { scenario, .. } => watch(scenario, &system, &system),
+            _ => None,
+        };
         self.system = system;
         self.source = source;
         self.clock.pending_ns = 0;
@@ -455,6 +476,7 @@ impl Session {
             .and_then(|base| Ok((base, setup::build(scenario, files, setup, DRAWN)?)))?;
         let (base, system) = system;
         self.baseline = parameters_of(&base);
+        self.exercise = watch(scenario, &base, &system);
         self.timeline = Timeline::new(&scenario.events);
         self.system = system;
         self.clock.pending_ns = 0;
@@ -475,6 +497,16 @@ impl Session {
     /// (the remainder kept; nothing while paused; at most [`MAX_STEP_MS`] per call; negative
     /// or non-finite counts as 0). Returns the number of ticks run.
     pub fn advance(&mut self, elapsed_ms: f64) -> u64 {
+        self.advance_while(elapsed_ms, || true)
+    }
+
+    /// [`advance`](Self::advance) within a budget: the time owed runs tick by tick while
+    /// `more()` says so (asked after each tick; at least one tick runs when one is owed).
+    /// What does not run stays owed for the next call, up to [`MAX_STEP_MS`] of wall time
+    /// × the speed: a machine too slow for the speed runs slower instead of falling ever
+    /// further behind. The ticks are the same ones, whichever calls run them, so the trace
+    /// does not depend on how the time was cut (the page's frame budget).
+    pub fn advance_while(&mut self, elapsed_ms: f64, mut more: impl FnMut() -> bool) -> u64 {
         if self.clock.paused {
             return 0;
         }
@@ -483,12 +515,30 @@ impl Session {
         } else {
             0.0
         };
-        self.clock.pending_ns += libm::round(ms * self.clock.speed * 1e6) as u64;
+        let owed_max = libm::round(MAX_STEP_MS * self.clock.speed * 1e6) as u64;
+        let owed = self.clock.pending_ns + libm::round(ms * self.clock.speed * 1e6) as u64;
+        self.clock.pending_ns = owed.min(owed_max);
         let base = self.system.wiring().execution_context().base_period_ns();
-        let ticks = self.clock.pending_ns / base;
-        self.clock.pending_ns %= base;
-        self.step_ticks(ticks);
-        ticks
+        let mut ran = 0;
+        while self.clock.pending_ns >= base {
+            // One tick (more if a replayed request plans past it), through the history.
+            let before = self.system.time_ns();
+            self.run_to(before.saturating_add(base));
+            let done = self.system.time_ns().saturating_sub(before).max(base);
+            self.clock.pending_ns = self.clock.pending_ns.saturating_sub(done);
+            ran += done / base;
+            if !more() {
+                break;
+            }
+        }
+        self.look();
+        ran
+    }
+
+    /// Simulated time owed to the clock and not yet run \[s\] (what a frame budget left for
+    /// later; below one base tick when the machine keeps up).
+    pub fn behind_s(&self) -> f64 {
+        self.clock.pending_ns as f64 * 1e-9
     }
 
     /// Runs `ticks` base ticks now, paused or not (single step).
@@ -499,6 +549,7 @@ impl Session {
             .time_ns()
             .saturating_add(ticks.saturating_mul(base));
         self.run_to(target);
+        self.look();
     }
 
     /// Runs to simulated time `target_ns` (a whole number of base ticks; later if a request
@@ -531,6 +582,18 @@ impl Session {
                 h.collect_marks(self.system.record(), self.system.time_ns());
             }
         }
+    }
+
+    /// The exercise watch reads what happened (after time ran or a request was made).
+    fn look(&mut self) {
+        if let Some(w) = &mut self.exercise {
+            w.observe(&self.system);
+        }
+    }
+
+    /// The scenario's exercise as it stands, if it has one.
+    pub fn exercise(&self) -> Option<ExerciseStatus> {
+        self.exercise.as_ref().map(ExerciseWatch::status)
     }
 
     /// Pauses or resumes the clock.
@@ -609,6 +672,7 @@ impl Session {
         if replans && planners_active && !self.system.is_driving() {
             self.system.run_until_planned(PLAN_SECONDS)?;
         }
+        self.look();
         Ok(())
     }
 

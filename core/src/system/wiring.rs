@@ -10,6 +10,7 @@ use core::fmt;
 
 use super::events::EventKind;
 use super::kind::ComponentKind;
+use super::links::{Links, Services};
 use super::rates::Rates;
 use crate::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
@@ -24,6 +25,9 @@ use crate::rtc::{
     Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, Time,
     TimedDouble, TimedDoubleSeq,
 };
+
+mod connections;
+use connections::Call;
 
 /// What happened in one base tick, or in one request between ticks.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,6 +59,10 @@ struct Bridges {
 pub struct Wiring {
     ec: ExecutionContext,
     rx: Bridges,
+    /// Every data connection as it was made.
+    links: Links,
+    /// Every service port and the calls made on it.
+    services: Services,
     map_loads: u64,
     map_updates: u64,
     /// Facts of requests and of the tick being pumped, not yet taken.
@@ -108,14 +116,14 @@ impl Wiring {
         let local = LocalPathPlanning::new(ComponentKind::LocalPathPlanning.instance_name());
         let drive = DriveControl::new(ComponentKind::DriveControl.instance_name());
 
-        // The system's ends: service calls and facts.
+        // The system's ends: service calls (`Services`) and facts (InventGUI's in-ports).
         let rx = Bridges {
             set_map: InPort::new("SetMap"),
             map_update: InPort::new("MapUpdate"),
             global_path: InPort::new("GlobalPathCourse"),
-            global_failure: InPort::new("PlanningFailure"),
-            local_path: InPort::new("InventGUICons"),
-            local_failure: InPort::new("InventGUIConsFailure"),
+            global_failure: InPort::new("GlobalPathFailure"),
+            local_path: InPort::new("LocalPathInventGUI"),
+            local_failure: InPort::new("LocalPathInventGUIFailure"),
             bump: InPort::new("BumpDetection"),
             safety_stop: InPort::new("SafetyStop"),
         };
@@ -139,6 +147,8 @@ impl Wiring {
         let mut wiring = Self {
             ec,
             rx,
+            links: Links::default(),
+            services: Services::default(),
             map_loads: 0,
             map_updates: 0,
             facts: Vec::new(),
@@ -148,59 +158,6 @@ impl Wiring {
         wiring.drain_lifecycle_events();
         wiring.tell_body_radius();
         Ok(wiring)
-    }
-
-    /// Connects the data ports of spec §0 and the system's bridges (`crate::system`'s
-    /// tables): when the wiring is made, and in an unconnected copy ([`Wiring::try_clone`]).
-    fn connect(&mut self) {
-        macro_rules! link {
-            ($from:ident . $out:ident => system . $rx:ident) => {{
-                let port = self.rx.$rx.share();
-                let from = self.get_mut::<$from>(ComponentKind::$from);
-                from.$out.connect(&port);
-            }};
-            ($from:ident . $out:ident => $to:ident . $inp:ident) => {{
-                let port = self.get::<$to>(ComponentKind::$to).$inp.share();
-                let from = self.get_mut::<$from>(ComponentKind::$from);
-                from.$out.connect(&port);
-            }};
-        }
-        // Data ports (spec §0).
-        link!(PhysicsSim.angle => MotorControl.in_current_wheel_angle);
-        link!(PhysicsSim.position => MotorControl.in_simulated_position);
-        link!(MotorControl.torque => PhysicsSim.torque);
-        link!(MotorControl.out_current_wheel_angle => Localization.in_current_wheel_angle);
-        link!(MotorControl.out_simulated_position_to_localization => Localization.in_simulated_position);
-        link!(Localization.out_current_position => LocalPathPlanning.in_current_position);
-        link!(Localization.out_current_position => DriveControl.in_current_position);
-        link!(Localization.out_current_position => GlobalPathPlanning.in_current_position);
-        link!(DriveControl.target_velocity => MotorControl.target_velocity);
-        link!(DriveControl.out_deviating => LocalPathPlanning.in_deviating);
-        link!(LocalPathPlanning.drive_cons => DriveControl.in_control_points);
-        // The system's ends: service calls and facts.
-        link!(MapBuilder.set_map => system.set_map);
-        link!(MapMaintenance.map_update_out => system.map_update);
-        link!(GlobalPathPlanning.global_path_course => system.global_path);
-        link!(GlobalPathPlanning.planning_failure => system.global_failure);
-        link!(LocalPathPlanning.invent_gui_cons => system.local_path);
-        link!(LocalPathPlanning.invent_gui_failure => system.local_failure);
-        link!(PhysicsSim.bump => system.bump);
-        link!(DriveControl.safety_stop => system.safety_stop);
-    }
-
-    /// A copy in the same state, connected alike, sharing nothing (a replay's checkpoint).
-    /// `None` while an injected sample waits for its component (a tick later it can be).
-    pub fn try_clone(&self) -> Option<Self> {
-        let mut copy = Self {
-            ec: self.ec.try_clone()?,
-            rx: self.rx.clone(),
-            map_loads: self.map_loads,
-            map_updates: self.map_updates,
-            facts: self.facts.clone(),
-            clearance_checked: self.clearance_checked,
-        };
-        copy.connect();
-        Some(copy)
     }
 
     // ------------------------------------------------------------------ components
@@ -378,6 +335,7 @@ impl Wiring {
             let (width, height, grid_size) = (map.width(), map.height(), map.grid_size());
             self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_grid_map(map);
+            self.record_call(Call::SetMap(width, height, grid_size));
             self.map_loads += 1;
             self.facts.push(EventKind::MapLoaded {
                 width,
@@ -405,6 +363,7 @@ impl Wiring {
                 escaped: gpp.escaped_steps(),
             };
             self.facts.push(fact);
+            self.record_call(Call::GlobalPathCourse(course.num));
             let r = self
                 .get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_global_path(&course);
@@ -454,12 +413,14 @@ impl Wiring {
             // Bump detection calls MotorControl's `Stop` (spec §4 Decision).
             self.get_mut::<MotorControl>(ComponentKind::MotorControl)
                 .stop();
+            self.record_call(Call::Stop);
             self.facts.push(EventKind::Bump { report });
         }
         self.drain_lifecycle_events();
     }
 
     fn deliver_map_update(&mut self, u: &MapUpdate) {
+        self.record_call(Call::MapUpdate(u.x.len()));
         let mut problems = Vec::new();
         let r = self
             .get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
@@ -640,8 +601,10 @@ impl Wiring {
         let tm = Time::from_nanos(self.ec.time_ns());
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .clear();
+        let call = Call::LoadMap(map.width(), map.height());
         self.get_mut::<MapBuilder>(ComponentKind::MapBuilder)
             .load(map, tm);
+        self.record_call(call);
         self.pump();
     }
 
@@ -653,6 +616,7 @@ impl Wiring {
         let changed = self
             .get_mut::<MapMaintenance>(ComponentKind::MapMaintenance)
             .map_update(update)?;
+        self.record_call(Call::EditMap(cells));
         self.facts.push(EventKind::MapUpdated { cells, changed });
         self.pump();
         Ok(changed)
@@ -701,6 +665,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .set_position(start, goal)?;
+        self.record_call(Call::SetPosition(start, goal, dir, place));
         self.facts.push(EventKind::GoalSet {
             start,
             goal,
@@ -723,6 +688,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .clear();
+        self.record_call(Call::Clear);
         self.facts.push(EventKind::Cleared);
     }
 
@@ -731,6 +697,7 @@ impl Wiring {
     pub fn safe_mode(&mut self) {
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .safe_mode();
+        self.record_call(Call::SafeMode);
         self.facts.push(EventKind::SafeMode);
     }
 
@@ -739,6 +706,7 @@ impl Wiring {
     pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
         self.get_mut::<MotorControl>(ComponentKind::MotorControl)
             .set_pd_gain(p_l, p_r, d_l, d_r)?;
+        self.record_call(Call::SetPdGain([p_l, p_r, d_l, d_r]));
         self.facts.push(EventKind::GainsSet { p_l, p_r, d_l, d_r });
         Ok(())
     }

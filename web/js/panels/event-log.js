@@ -4,6 +4,8 @@
 // core's (`rtnav::system::EventKind`), numbers already written for people; the page only
 // writes the time.
 import { el } from '../dom.js';
+import { t } from '../i18n.js';
+import { eventText } from '../words.js';
 
 const MAX_ENTRIES = 300;
 
@@ -13,8 +15,8 @@ export const seconds = (t) => `${t.toFixed(3)} s`;
 export function createEventLog(root, app) {
   const { demo } = app;
   const list = el('ol', { id: 'events', class: 'events', reversed: true });
-  const clear = el('button', { type: 'button', class: 'link', id: 'clear-log', onclick: () => list.replaceChildren() }, 'clear');
-  root.append(el('div', { class: 'panel-head' }, el('h2', {}, 'Event log'), clear), list);
+  const clear = el('button', { type: 'button', class: 'link', id: 'clear-log', onclick: () => list.replaceChildren() }, t('log.clear'));
+  root.append(el('div', { class: 'panel-head' }, el('h2', {}, t('log.title')), clear), list);
 
   /** The component an instance name names (`MotorControl0` → `MotorControl`). */
   const componentOf = (instance) => instance.replace(/\d+$/, '');
@@ -39,7 +41,7 @@ export function createEventLog(root, app) {
   function add(e) {
     const item = el('li', { dataset: { kind: e.kind, level: e.level, t: String(e.time_s) } },
       el('time', {}, seconds(e.time_s)),
-      el('span', { class: 'text' }, e.text));
+      el('span', { class: 'text' }, eventText(e)));
     let before = list.firstElementChild;
     while (before && Number(before.dataset.t) > e.time_s) before = before.nextElementSibling;
     list.insertBefore(item, before);
@@ -50,7 +52,7 @@ export function createEventLog(root, app) {
     const events = JSON.parse(app.guard.call(() => demo.take_events()) ?? '[]');
     for (const e of events) add(e);
     const loud = events.filter((e) => e.kind in NOTICE).at(-1);
-    if (loud) app.notice.show(loud.text, loud.level, { until: NOTICE[loud.kind](loud) });
+    if (loud) app.notice.show(eventText(loud), loud.level, { until: NOTICE[loud.kind](loud) });
   }
 
   return {

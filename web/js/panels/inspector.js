@@ -10,6 +10,7 @@
 // stage's `hover` event (`pixel_to_cell`); it is read again while shown, a few times a
 // second, because the field changes as the robot drives.
 import { el, setText } from '../dom.js';
+import { t } from '../i18n.js';
 
 const POLL_MS = 250;
 
@@ -25,19 +26,19 @@ function num(v, digits = 3) {
 /** The rows: key, label, how to read it from the answer, how to show it, a hint. */
 const metres = (v) => `${v.toFixed(2)} m`;
 const FIELDS = [
-  ['cell', 'Cell', (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, 'Map cell (x, y), x to the right, y up'],
-  ['centre', 'Centre', (j) => j.centre, (v) => `x ${metres(v[0])}, y ${metres(v[1])}`, 'The cell\'s centre in the map\'s coordinates, metres (origin + (index + ½) · GridSize)'],
-  ['occupancy', 'Occupancy', (j) => j.occupancy, (v) => `${v} · ${v === 0 ? 'free' : 'obstacle'}`, 'The map value: 0 free, 1 obstacle'],
-  ['obstacle_distance', 'Obstacle distance', (j) => j.obstacle_distance, (v) => `${num(v)} m`, 'Straight distance to the nearest obstacle cell (exact EDT)'],
-  ['impassable', 'Within dmin', (j) => j.impassable, (v) => (v ? 'yes · impassable' : 'no'), 'Closer to an obstacle than dmin: the planners do not enter it'],
-  ['potential', 'Potential G', (j) => j.field?.potential ?? null, num, 'LocalPathPlanning\'s potential G (000 §5.2.4.9); the path descends it'],
+  ['cell', t('inspector.cell'), (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, 'Map cell (x, y), x to the right, y up'],
+  ['centre', t('inspector.centre'), (j) => j.centre, (v) => `x ${metres(v[0])}, y ${metres(v[1])}`, 'The cell\'s centre in the map\'s coordinates, metres (origin + (index + ½) · GridSize)'],
+  ['occupancy', t('inspector.occupancy'), (j) => j.occupancy, (v) => `${v} · ${v === 0 ? 'free' : 'obstacle'}`, 'The map value: 0 free, 1 obstacle'],
+  ['obstacle_distance', t('inspector.obstacle_distance'), (j) => j.obstacle_distance, (v) => `${num(v)} m`, 'Straight distance to the nearest obstacle cell (exact EDT)'],
+  ['impassable', t('inspector.impassable'), (j) => j.impassable, (v) => (v ? 'yes · impassable' : 'no'), 'Closer to an obstacle than dmin: the planners do not enter it'],
+  ['potential', t('inspector.potential'), (j) => j.field?.potential ?? null, num, 'LocalPathPlanning\'s potential G (000 §5.2.4.9); the path descends it'],
   ['parent', '= G(parent)', (j) => j.field?.parent ?? null, (v) => (v ? `${num(v.potential)} at (${v.x}, ${v.y})` : '—'),
     'The neighbour the cell got its potential from (the first finalized, lowest), and that potential: G = G(parent) + R + A + P'],
-  ['repulsion', '+ repulsion R', (j) => j.field?.repulsion ?? null, num, 'The obstacles\' part of the potential'],
-  ['attraction', '+ attraction A', (j) => j.field?.attraction ?? null, num, 'The goal\'s part of the potential'],
-  ['posture', '+ posture P', (j) => j.field?.posture ?? null, num, 'The start and goal posture\'s part (PostureConsiderationLevel)'],
-  ['state', 'Field state', (j) => j.field?.state ?? null, (v) => v ?? '—', 'The cell\'s state in the potential field'],
-  ['unreached', 'Unreached', (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), 'Not reached by the field\'s wave from the goal'],
+  ['repulsion', t('inspector.repulsion'), (j) => j.field?.repulsion ?? null, num, 'The obstacles\' part of the potential'],
+  ['attraction', t('inspector.attraction'), (j) => j.field?.attraction ?? null, num, 'The goal\'s part of the potential'],
+  ['posture', t('inspector.posture'), (j) => j.field?.posture ?? null, num, 'The start and goal posture\'s part (PostureConsiderationLevel)'],
+  ['state', t('inspector.state'), (j) => j.field?.state ?? null, (v) => v ?? '—', 'The cell\'s state in the potential field'],
+  ['unreached', t('inspector.unreached'), (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), 'Not reached by the field\'s wave from the goal'],
 ];
 
 export function createInspector(root, app) {
@@ -48,7 +49,7 @@ export function createInspector(root, app) {
   let lastPoll = -Infinity;
   let lastJson = '';
 
-  const where = el('p', { class: 'panel-hint', id: 'inspector-where' }, 'Move the mouse over the map.');
+  const where = el('p', { class: 'panel-hint', id: 'inspector-where' }, t('inspector.move'));
   const list = el('dl', { class: 'inspector', id: 'inspector' });
   const values = new Map();
   for (const [key, label, , , hint] of FIELDS) {
@@ -58,12 +59,10 @@ export function createInspector(root, app) {
   }
   const error = el('p', { class: 'param-error', hidden: true });
   root.append(
-    el('div', { class: 'panel-head' }, el('h2', {}, 'Inspector')),
+    el('div', { class: 'panel-head' }, el('h2', {}, t('inspector.title'))),
     where, list, error,
     el('p', { class: 'panel-hint small', id: 'inspector-sum' },
-      'A cell\'s potential is its parent\'s plus its own parts: G = G(parent) + R + A + P (000 §5.2.4.9). ',
-      'The field grows from the local target (G = 0.1, no parent) toward the robot; cells not reached from it, ',
-      'or within dmin of an obstacle, have none.'),
+      t('inspector.sum')),
   );
 
   function clearValues() {
@@ -116,7 +115,7 @@ export function createInspector(root, app) {
     cell = null;
     clearValues();
     error.hidden = true;
-    setText(where, 'Move the mouse over the map.');
+    setText(where, t('inspector.move'));
   });
   app.on('tab', (name) => { if (name === 'inspector') dirty = true; });
 

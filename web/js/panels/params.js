@@ -14,17 +14,17 @@
 // (`data-value`, `data-effective`, `data-pending`) for the end-to-end tests.
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
+import { t, language } from '../i18n.js';
 
 const POLL_MS = 500;
 const REFLECTION = {
-  always: ['always', 'Reflected always (常時): the component uses a new value at once.'],
-  on_activation: ['on activation',
-    'Reflected on activation (初期化時): a new value waits until the component is next activated (Deactivate, then Activate).'],
+  always: [t('params.always'), t('params.always.title')],
+  on_activation: [t('params.on_activation'), t('params.on_activation.title')],
 };
 const PD_GAINS = [['PGainL', 'P left'], ['PGainR', 'P right'], ['DGainL', 'D left'], ['DGainR', 'D right']];
 /** Notes beside a parameter, about the system as a whole. */
 const NOTES = {
-  'LocalPathPlanning/dmin': 'One dmin for the system: GlobalPathPlanning\'s follows this one (spec §3).',
+  'LocalPathPlanning/dmin': t('params.dmin_note'),
 };
 
 /** A parameter's value as text that reads back as the same number. */
@@ -50,14 +50,14 @@ export function createParamsPanel(root, app) {
   };
   const exportButton = el('button', {
     type: 'button', class: 'secondary', id: 'conf-export',
-    title: 'Save the whole configuration (every component with parameters) as one OpenRTM .conf file',
+    title: t('params.export.title'),
     onclick: () => {
       const r = app.attempt(() => demo.conf_export());
-      if (!r.ok) return say(`Export failed: ${r.error}`, 'error');
+      if (!r.ok) return say(t('params.export.failed', { error: r.error }), 'error');
       downloadText(r.value, 'rtnav.conf');
-      say('Configuration saved as rtnav.conf.', 'success');
+      say(t('params.export.saved'), 'success');
     },
-  }, 'Export .conf');
+  }, t('params.export'));
   const importInput = el('input', { type: 'file', id: 'conf-import', accept: '.conf,text/plain' });
   importInput.addEventListener('change', async () => {
     const file = importInput.files?.[0];
@@ -67,22 +67,22 @@ export function createParamsPanel(root, app) {
     const r = app.attempt(() => demo.conf_import(text));
     if (!r.ok) {
       say(`${file.name} not imported (nothing changed): ${r.error}`, 'error');
-      app.log.page(`.conf import refused: ${r.error}`, 'warn');
+      app.log.page(t('refused', { what: t('params.import.what'), error: r.error }), 'warn');
       return;
     }
     say(`${file.name} imported.`, 'success');
-    app.log.page(`Configuration imported from ${file.name}`, 'info');
+    app.log.page(t('params.imported', { file: file.name }), 'info');
     app.emit('changed');
   });
   const importButton = el('label', {
-    class: 'file-button light', title: 'Load an OpenRTM .conf file: all of it or nothing (a bad line is reported)',
-  }, 'Import .conf…', importInput);
+    class: 'file-button light', title: t('params.import.title'),
+  }, t('params.import'), importInput);
 
   const body = el('div', { class: 'param-groups', id: 'param-groups' });
   root.append(
-    el('div', { class: 'panel-head' }, el('h2', {}, 'Parameters'),
+    el('div', { class: 'panel-head' }, el('h2', {}, t('params.title')),
       el('span', { class: 'head-actions' }, exportButton, importButton)),
-    el('p', { class: 'panel-hint' }, 'Type a value and press Enter. A refused value is explained and put back.'),
+    el('p', { class: 'panel-hint' }, t('params.hint')),
     message,
     body,
   );
@@ -98,7 +98,7 @@ export function createParamsPanel(root, app) {
       row.node.classList.add('refused');
       const p = held.get(`${component}/${name}`);
       row.input.value = show(p?.value);
-      app.log.page(`${component}.${name} = ${text} refused: ${r.error}`, 'warn');
+      app.log.page(t('refused', { what: `${component}.${name} = ${text}`, error: r.error }), 'warn');
     } else {
       // The core logs the change itself (ParameterSet).
       row.error.hidden = true;
@@ -126,11 +126,13 @@ export function createParamsPanel(root, app) {
       input,
       el('span', { class: 'param-unit' }, unitText(p.unit)),
       el('div', { class: 'param-desc', id: `${id}-desc` },
-        el('span', { class: 'param-en' }, p.description),
-        p.seed_text ? el('span', { class: 'param-ja', lang: 'ja', title: 'The seed\'s own words (its §4.2 table)' }, p.seed_text) : null,
+        language() === 'ja'
+          ? el('span', { class: 'param-ja', lang: 'ja' }, p.seed_text ?? t(`param.${c.component}.${p.name}`))
+          : el('span', { class: 'param-en' }, p.description),
+        p.seed_text && language() !== 'ja' ? el('span', { class: 'param-ja', lang: 'ja', title: t('params.seed_words') }, p.seed_text) : null,
         about ? el('span', { class: 'param-note' }, about) : null),
       el('div', { class: 'param-meta', id: `${id}-meta` },
-        el('span', { class: 'param-range', title: p.type === 'int' ? 'whole numbers' : 'real numbers' }, `${p.type} ${p.range}`),
+        el('span', { class: 'param-range', title: p.type === 'int' ? t('params.int') : t('params.real') }, `${p.type} ${p.range}`),
         el('span', { class: 'param-reflection', title: reflectTitle }, reflectText),
         pendingTag),
       warning,
@@ -191,7 +193,7 @@ export function createParamsPanel(root, app) {
       if (!r.ok) {
         error.textContent = r.error;
         error.hidden = false;
-        app.log.page(`SetPDGain refused: ${r.error}`, 'warn');
+        app.log.page(t('refused', { what: 'SetPDGain', error: r.error }), 'warn');
         for (const [n, input] of inputs) input.value = show(held.get(`MotorControl/${n}`)?.value);
       } else {
         // The core logs the call itself (GainsSet).
@@ -230,13 +232,13 @@ export function createParamsPanel(root, app) {
         d.pending = String(Boolean(p.pending));
         row.node.classList.toggle('pending', Boolean(p.pending));
         row.pendingTag.hidden = !p.pending;
-        setText(row.pendingTag, p.pending ? `pending (next activation) · in use: ${show(p.effective)}` : '');
+        setText(row.pendingTag, p.pending ? t('params.pending', { value: show(p.effective) }) : '');
         row.node.classList.toggle('changed', p.value !== p.default);
         row.node.classList.toggle('warned', Boolean(p.warning));
         row.node.dataset.warning = p.warning ?? '';
         setText(row.warning, p.warning ? `⚠ ${p.warning}` : '');
         row.warning.hidden = !p.warning;
-        row.node.title = p.value !== p.default ? `default ${show(p.default)}` : '';
+        row.node.title = p.value !== p.default ? t('params.default', { value: show(p.default) }) : '';
         if (p.pending) pending++;
       }
       setText(group.count, `${c.params.length} parameters${pending ? ` · ${pending} pending` : ''}`);

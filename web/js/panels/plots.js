@@ -11,6 +11,7 @@
 // Drawn at most ten times a second, only while the tab is shown and simulated time moved
 // (or the size changed): the main frame (step + render + blit) does not pay for it.
 import { el } from '../dom.js';
+import { t } from '../i18n.js';
 
 const WINDOW_S = 10;
 const REDRAW_MS = 100;
@@ -29,7 +30,7 @@ const DASH = [5, 3];
 
 const PLOTS = [
   {
-    id: 'plot-rates', title: 'Wheel rates', unit: 'rad/s',
+    id: 'plot-rates', title: t('plots.rates'), unit: 'rad/s',
     series: [
       ['target_rate_l', 'target L', LEFT, DASH], ['rate_l', 'L', LEFT],
       ['target_rate_r', 'target R', RIGHT, DASH], ['rate_r', 'R', RIGHT],
@@ -39,7 +40,7 @@ const PLOTS = [
     // Commanded (MotorControl) dashed, applied (the physics, saturated) solid, and the
     // saturation limit ±MaxTorque. The y-range follows the applied torques and the limit: a
     // command far beyond it is cut at the frame and said so.
-    id: 'plot-torques', title: 'Wheel torques', unit: 'N·m',
+    id: 'plot-torques', title: t('plots.torques'), unit: 'N·m',
     series: [
       ['torque_l', 'cmd L', LEFT, DASH], ['applied_l', 'L', LEFT],
       ['torque_r', 'cmd R', RIGHT, DASH], ['applied_r', 'R', RIGHT],
@@ -48,11 +49,11 @@ const PLOTS = [
     limit: ['max_torque', '±MaxTorque'], symmetric: true,
   },
   {
-    id: 'plot-velocity', title: 'Speed v and turn rate ω', unit: 'm/s · rad/s',
+    id: 'plot-velocity', title: t('plots.velocity'), unit: 'm/s · rad/s',
     series: [['v_cmd', 'v cmd', V, DASH], ['v', 'v', V], ['w_cmd', 'ω cmd', W, DASH], ['w', 'ω', W]],
   },
   {
-    id: 'plot-deviation', title: 'Deviation from the path', unit: 'm',
+    id: 'plot-deviation', title: t('plots.deviation'), unit: 'm',
     series: [['deviation', 'deviation', DEV]], limit: ['deviatinglen', 'Deviatinglen'],
   },
 ];
@@ -106,10 +107,10 @@ export function createPlots(root, app) {
 
   const canvases = PLOTS.map((p) => el('canvas', { id: p.id, class: 'plot', role: 'img', 'aria-label': `${p.title} [${p.unit}]` }));
   root.append(
-    el('div', { class: 'panel-head' }, el('h2', {}, 'Plots'), el('span', { class: 'legend' }, `last ${WINDOW_S} s of simulated time`)),
+    el('div', { class: 'panel-head' }, el('h2', {}, t('plots.title')), el('span', { class: 'legend' }, t('plots.window', { s: WINDOW_S }))),
     el('p', { class: 'panel-hint small' },
-      'Dashed: what was asked (target, command); solid: what happened. ',
-      el('span', { class: 'replan-key' }, '┆'), ' a global or local plan.'),
+      t('plots.hint'),
+      el('span', { class: 'replan-key' }, '┆'), t('plots.replan')),
     ...canvases.map((c) => el('div', { class: 'plot-box' }, c)),
   );
 
@@ -256,7 +257,7 @@ export function createPlots(root, app) {
     canvas.dataset.offScale = String(beyond);
     if (beyond) {
       // Inside the frame's bottom left, on a white box, clear of the legend.
-      const note = 'commanded: beyond the scale';
+      const note = t('plots.beyond');
       const w = ctx.measureText(note).width + 8;
       ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
       ctx.fillRect(m.l + 2, m.t + ph - 16, w, 14);
@@ -267,7 +268,7 @@ export function createPlots(root, app) {
     if (ts.length === 0) {
       ctx.fillStyle = MUTED;
       ctx.textAlign = 'center';
-      ctx.fillText('no telemetry yet: Activate all to drive', m.l + pw / 2, m.t + ph / 2);
+      ctx.fillText(t('plots.empty'), m.l + pw / 2, m.t + ph / 2);
     }
   }
 

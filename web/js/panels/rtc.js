@@ -4,18 +4,18 @@
 // a "Sensor glitch" (issue 7): one NaN pose written into its InSimulatedPosition port, as
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
+import { t } from '../i18n.js';
+import { componentStatus } from '../words.js';
 
 const ACTIONS = {
-  Inactive: ['activate', 'Activate'],
-  Active: ['deactivate', 'Deactivate'],
-  Error: ['reset', 'Reset'],
+  Inactive: ['activate', t('rtc.activate')],
+  Active: ['deactivate', t('rtc.deactivate')],
+  Error: ['reset', t('rtc.reset')],
 };
 const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
 /** The sensor glitch: which component, which InPort, what sample (x, y, z, θ). */
 const GLITCH = { component: 'Localization', port: 'InSimulatedPosition', sample: () => new Float64Array([Number.NaN, 0, 0, 0]) };
-const GLITCH_TITLE = 'Write one pose (NaN, 0, 0, 0) into Localization\'s InSimulatedPosition, as a broken sensor would '
-  + '(like OpenRTM rtshell\'s rtinject). Localization refuses it in its next execution and goes to Error with the reason; '
-  + 'Reset brings it back to Inactive.';
+const GLITCH_TITLE = t('rtc.glitch.title');
 
 function paint(badge, state, colour) {
   if (badge.dataset.state === state) return;
@@ -32,8 +32,8 @@ export function createRtcPanel(root, app) {
     if (/^(Reset|Activate)/.test(what)) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
-      app.notice.show(`${what} refused: ${r.error}`, 'error');
-      app.log.page(`${what} refused: ${r.error}`, 'warn');
+      app.notice.show(t('refused', { what, error: r.error }), 'error');
+      app.log.page(t('refused', { what, error: r.error }), 'warn');
     }
     app.emit('changed');
     return r;
@@ -49,18 +49,18 @@ export function createRtcPanel(root, app) {
     const status = el('div', { class: 'rtc-status' });
     const reason = el('div', { class: 'rtc-reason', hidden: true });
     const action = el('button', { type: 'button', class: 'act' });
-    const fault = el('button', { type: 'button', class: 'fault danger', title: `Make ${c.instance_name}'s next execution fail` }, 'Inject fault');
+    const fault = el('button', { type: 'button', class: 'fault danger', title: t('rtc.fault.title', { name: c.instance_name }) }, t('rtc.fault'));
     action.addEventListener('click', () => {
       const what = action.dataset.action;
       request(`${action.textContent} ${c.name}`, () => demo[what](c.name));
     });
-    fault.addEventListener('click', () => request(`Inject fault into ${c.name}`, () => demo.inject_fault(c.name)));
+    fault.addEventListener('click', () => request(t('rtc.fault.request', { name: c.name }), () => demo.inject_fault(c.name)));
     let glitch = null;
     if (c.name === GLITCH.component) {
-      glitch = el('button', { type: 'button', class: 'glitch danger', title: GLITCH_TITLE }, 'Sensor glitch');
+      glitch = el('button', { type: 'button', class: 'glitch danger', title: GLITCH_TITLE }, t('rtc.glitch'));
       glitch.addEventListener('click', () => {
-        const r = request('Sensor glitch', () => demo.inject_input(GLITCH.component, GLITCH.port, GLITCH.sample()));
-        if (r.ok) app.log.page(`Sensor glitch: (NaN, 0, 0, 0) written into ${GLITCH.component}.${GLITCH.port}`, 'warn');
+        const r = request(t('rtc.glitch'), () => demo.inject_input(GLITCH.component, GLITCH.port, GLITCH.sample()));
+        if (r.ok) app.log.page(t('rtc.glitch.log', { port: `${GLITCH.component}.${GLITCH.port}` }), 'warn');
       });
     }
     const li = el('li', { class: 'rtc', dataset: { component: c.name } },
@@ -75,10 +75,10 @@ export function createRtcPanel(root, app) {
 
   root.append(
     el('div', { class: 'panel-head' },
-      el('h2', {}, 'RT-components'),
+      el('h2', {}, t('rtc.title')),
       el('span', { class: 'legend' },
         ...Object.entries(EDITOR).flatMap(([s, c]) => [el('span', { class: 'swatch', style: `--c:${c}` }), s]))),
-    el('p', { class: 'panel-hint' }, 'Activate all, Deactivate all and Reset all are in the bar above, on every tab.'),
+    el('p', { class: 'panel-hint' }, t('rtc.hint')),
     list,
   );
 
@@ -91,16 +91,16 @@ export function createRtcPanel(root, app) {
         setText(r.badge, c.state);
         setText(r.name, c.instance_name);
         setText(r.rate, `${c.rate} Hz`);
-        setText(r.status, c.status);
-        const why = c.state === 'Error' && c.last_error ? `Reason: ${c.last_error}` : '';
+        setText(r.status, componentStatus(c.status));
+        const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: c.last_error }) : '';
         setText(r.reason, why);
         r.reason.hidden = !why;
-        const [action, label] = ACTIONS[c.state] ?? ['activate', 'Activate'];
+        const [action, label] = ACTIONS[c.state] ?? ['activate', t('rtc.activate')];
         r.action.dataset.action = action;
         setText(r.action, label);
         r.action.disabled = !(c.state in ACTIONS);
         r.fault.disabled = !(c.state === 'Inactive' || c.state === 'Active') || c.fault_pending;
-        setText(r.fault, c.fault_pending ? 'Fault pending…' : 'Inject fault');
+        setText(r.fault, c.fault_pending ? t('rtc.fault.pending') : t('rtc.fault'));
         // A sample only matters to a component that executes: Active only.
         if (r.glitch) r.glitch.disabled = c.state !== 'Active';
       }

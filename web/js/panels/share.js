@@ -4,20 +4,21 @@
 // canvas as PNG.
 import { el } from '../dom.js';
 import { download, downloadText } from '../download.js';
+import { t, language } from '../i18n.js';
 
 export function createShare(root, canvas, app) {
   const { demo } = app;
 
   const link = el('input', {
     type: 'text', id: 'share-link', class: 'share-link', readonly: true, hidden: true,
-    'aria-label': 'Share link', title: 'The link to this set-up: open it to get the same scenario, edits and parameters',
+    'aria-label': t('share.link'), title: t('share.link.title'),
   });
   link.addEventListener('focus', () => link.select());
 
   async function copyLink() {
     const r = app.attempt(() => demo.share_token());
     if (!r.ok) {
-      app.notice.show(`No share link: ${r.error}`, 'error');
+      app.notice.show(t('share.none', { error: r.error }), 'error');
       return;
     }
     // While the robot stands, making the link restarts the set-up from it (what the link
@@ -26,11 +27,11 @@ export function createShare(root, canvas, app) {
     if (!JSON.parse(demo.telemetry_json()).driving) {
       app.log.clear();
       app.log.update();
-      app.log.page('Set-up restarted from the share link (what the link opens with).', 'info');
+      app.log.page(t('share.restarted'), 'info');
     }
     app.emit('changed');
     app.stage.draw();
-    const url = `${location.origin}${location.pathname}?share=${r.value}`;
+    const url = `${location.origin}${location.pathname}?lang=${language()}&share=${r.value}`;
     link.value = url;
     link.hidden = false;
     link.dataset.token = r.value;
@@ -44,33 +45,33 @@ export function createShare(root, canvas, app) {
     link.focus();
     link.select();
     app.notice.show(copied
-      ? 'Share link copied: it opens this scenario with the same start, goal, map edits and parameters.'
-      : 'Share link made: copy it from the field under the canvas.', 'success');
+      ? t('share.copied')
+      : t('share.made'), 'success');
   }
 
   const share = el('button', {
     type: 'button', id: 'share-copy', class: 'secondary',
-    title: 'Make a link to this set-up (scenario, start, goal, map edits, changed parameters) and copy it',
+    title: t('share.copy.title'),
     onclick: copyLink,
-  }, 'Copy share link');
+  }, t('share.copy'));
   const csv = el('button', {
-    type: 'button', id: 'export-csv', class: 'secondary', title: 'Download the telemetry history as CSV (one row per sample, header first)',
+    type: 'button', id: 'export-csv', class: 'secondary', title: t('share.csv.title'),
     onclick: () => {
       const r = app.attempt(() => demo.telemetry_csv());
-      if (!r.ok) return app.notice.show(`No telemetry CSV: ${r.error}`, 'error');
+      if (!r.ok) return app.notice.show(t('share.csv.none', { error: r.error }), 'error');
       downloadText(r.value, 'rtnav-telemetry.csv', 'text/csv');
     },
-  }, 'Telemetry CSV');
+  }, t('share.csv'));
   const png = el('button', {
-    type: 'button', id: 'export-png', class: 'secondary', title: 'Download the frame on the canvas as PNG',
+    type: 'button', id: 'export-png', class: 'secondary', title: t('share.png.title'),
     onclick: () => canvas.toBlob((blob) => {
       if (blob) download(blob, 'rtnav-frame.png');
-      else app.notice.show('The frame could not be saved as PNG.', 'error');
+      else app.notice.show(t('share.png.none'), 'error');
     }, 'image/png'),
-  }, 'Frame PNG');
+  }, t('share.png'));
 
   root.append(
-    el('div', { class: 'share-row' }, share, el('span', { class: 'export-label' }, 'Export'), csv, png),
+    el('div', { class: 'share-row' }, share, el('span', { class: 'export-label' }, t('share.export')), csv, png),
     link,
   );
   app.on('loaded', () => {

@@ -3,6 +3,7 @@
 // Deactivate all, Reset all — which start and stop the robot. What the robot is doing is
 // the core's `Status` (the telemetry's status), never guessed here.
 import { el, setText, textOn } from '../dom.js';
+import { t } from '../i18n.js';
 
 const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
 
@@ -14,30 +15,30 @@ export function createSystemBar(root, app) {
     if (endsNotices) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
-      app.notice.show(`${what} refused: ${r.error}`, 'error');
-      app.log.page(`${what} refused: ${r.error}`, 'warn');
+      app.notice.show(t('refused', { what, error: r.error }), 'error');
+      app.log.page(t('refused', { what, error: r.error }), 'warn');
     }
     app.emit('changed');
     return r;
   };
 
-  const badge = el('span', { id: 'system-state', class: 'state-badge', title: 'The whole system: every component\'s lifecycle state together' });
+  const badge = el('span', { id: 'system-state', class: 'state-badge', title: t('system.badge.title') });
   const buttons = {
     activate: el('button', {
-      type: 'button', id: 'activate-all', title: 'Activate every Inactive component (the robot drives to its goal)',
-      onclick: () => request('Activate all', () => demo.activate_all(), true),
-    }, 'Activate all'),
+      type: 'button', id: 'activate-all', title: t('system.activate_all.title'),
+      onclick: () => request(t('system.activate_all'), () => demo.activate_all(), true),
+    }, t('system.activate_all')),
     deactivate: el('button', {
-      type: 'button', id: 'deactivate-all', class: 'secondary', title: 'Deactivate every Active component (the robot stops)',
-      onclick: () => request('Deactivate all', () => demo.deactivate_all(), false),
-    }, 'Deactivate all'),
+      type: 'button', id: 'deactivate-all', class: 'secondary', title: t('system.deactivate_all.title'),
+      onclick: () => request(t('system.deactivate_all'), () => demo.deactivate_all(), false),
+    }, t('system.deactivate_all')),
     reset: el('button', {
-      type: 'button', id: 'reset-all', class: 'secondary', title: 'Reset every component in Error and deactivate the Active ones',
-      onclick: () => request('Reset all', () => demo.reset_all(), true),
-    }, 'Reset all'),
+      type: 'button', id: 'reset-all', class: 'secondary', title: t('system.reset_all.title'),
+      onclick: () => request(t('system.reset_all'), () => demo.reset_all(), true),
+    }, t('system.reset_all')),
   };
   root.append(
-    el('span', { class: 'system-label' }, 'System'),
+    el('span', { class: 'system-label' }, t('system.label')),
     badge,
     el('span', { class: 'all-buttons' }, buttons.activate, buttons.deactivate, buttons.reset),
   );
@@ -54,7 +55,7 @@ export function createSystemBar(root, app) {
         badge.style.background = colour;
         badge.style.color = textOn(colour);
       }
-      setText(badge, s === 'Partial' ? `Partial · ${active} of ${components.length} Active` : s);
+      setText(badge, s === 'Partial' ? t('system.partial', { active, total: components.length }) : s);
       buttons.activate.disabled = !components.some((c) => c.state === 'Inactive');
       buttons.deactivate.disabled = active === 0;
       buttons.reset.disabled = error === 0 && active === 0;

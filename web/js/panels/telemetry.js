@@ -2,14 +2,15 @@
 // goal is, what the planners have done. `data-*` attributes carry the raw values (the
 // end-to-end test reads them).
 import { el, setText } from '../dom.js';
+import { t, has, language } from '../i18n.js';
 
 const FIELDS = [
-  ['status', 'Status'],
-  ['pose', 'Robot'],
+  ['status', t('telemetry.status')],
+  ['pose', t('telemetry.pose')],
   ['speed', 'v · ω'],
-  ['goal', 'To goal'],
-  ['driven', 'Driven'],
-  ['plans', 'Plans sent'],
+  ['goal', t('telemetry.goal')],
+  ['driven', t('telemetry.driven')],
+  ['plans', t('telemetry.plans')],
 ];
 
 export function createTelemetry(root, app) {
@@ -24,25 +25,27 @@ export function createTelemetry(root, app) {
 
   return {
     update() {
-      const t = JSON.parse(demo.telemetry_json());
-      root.dataset.arrived = String(t.arrived);
-      root.dataset.driving = String(t.driving);
-      root.dataset.state = t.state;
-      root.dataset.distance = t.distance_to_goal ?? '';
-      root.dataset.bumps = t.bumps;
-      root.dataset.localPlans = t.local_plans;
-      set('pose', `${t.pose.x.toFixed(2)}, ${t.pose.y.toFixed(2)} m · ${Math.round(t.pose.theta_deg)}°`);
-      set('speed', `${t.v.toFixed(2)} m/s · ${t.w.toFixed(2)} rad/s`);
-      set('goal', t.distance_to_goal === null ? '—' : `${t.distance_to_goal.toFixed(2)} m`);
-      set('driven', `${t.path_length.toFixed(2)} m`);
-      root.dataset.status = t.status_kind;
-      set('plans', `${t.global_plans} global · ${t.local_plans} local`);
+      const v = JSON.parse(demo.telemetry_json());
+      root.dataset.arrived = String(v.arrived);
+      root.dataset.driving = String(v.driving);
+      root.dataset.state = v.state;
+      root.dataset.distance = v.distance_to_goal ?? '';
+      root.dataset.bumps = v.bumps;
+      root.dataset.localPlans = v.local_plans;
+      set('pose', `${v.pose.x.toFixed(2)}, ${v.pose.y.toFixed(2)} m · ${Math.round(v.pose.theta_deg)}°`);
+      set('speed', `${v.v.toFixed(2)} m/s · ${v.w.toFixed(2)} rad/s`);
+      set('goal', v.distance_to_goal === null ? '—' : `${v.distance_to_goal.toFixed(2)} m`);
+      set('driven', `${v.path_length.toFixed(2)} m`);
+      root.dataset.status = v.status_kind;
+      set('plans', t('telemetry.plans.value', { global: v.global_plans, local: v.local_plans }));
       // What the core says is true (rtnav::system::Status), not guessed here.
-      let status = t.status.charAt(0).toUpperCase() + t.status.slice(1);
-      if (t.paused) status += ' · paused';
+      // The core's words in English; in another language, the catalogue's for the status's kind.
+      const said = language() !== 'en' && has(`status.${v.status_kind}`) ? t(`status.${v.status_kind}`) : v.status;
+      let status = said.charAt(0).toUpperCase() + said.slice(1);
+      if (v.paused) status += t('telemetry.paused');
       set('status', status);
       if (values.get('status').title !== status) values.get('status').title = status;
-      values.get('status').dataset.arrived = String(t.arrived);
+      values.get('status').dataset.arrived = String(v.arrived);
     },
   };
 }

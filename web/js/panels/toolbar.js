@@ -3,28 +3,29 @@
 // (000 §5.2.4.7) and the layers the renderer draws; over the map: zoom in, out, Fit; in the
 // system bar beside the clock: pause, one tick, speed.
 import { el } from '../dom.js';
+import { t } from '../i18n.js';
 
 const TOOLS = [
-  ['goal', 'Goal', 'g', 'Drag to set the goal and its heading'],
-  ['start', 'Start', 's', 'Drag to place the robot and its heading'],
-  ['paint', 'Obstacle', 'o', 'Paint obstacle cells: one stroke is one MapUpdate'],
-  ['erase', 'Erase', 'e', 'Erase obstacle cells: one stroke is one MapUpdate'],
-  ['pan', 'Pan', 'p', 'Drag the picture (wheel or pinch to zoom)'],
+  ['goal', t('tool.goal'), 'g', t('tool.goal.title')],
+  ['start', t('tool.start'), 's', t('tool.start.title')],
+  ['paint', t('tool.paint'), 'o', t('tool.paint.title')],
+  ['erase', t('tool.erase'), 'e', t('tool.erase.title')],
+  ['pan', t('tool.pan'), 'p', t('tool.pan.title')],
 ];
 const SPEEDS = [0.25, 0.5, 1, 2, 4, 8, 16];
 /** Brush sizes: a square of n×n cells, or of a side in metres. */
 const BRUSHES = { cells: [1, 3, 5, 9], m: [0.25, 0.5, 1, 2] };
 const LAYER_NAMES = {
-  occupancy: 'Obstacles',
+  occupancy: t('layer.occupancy'),
   dmin_zone: 'dmin zone',
-  heat_map: 'Potential field',
-  global_path: 'Global path',
-  local_path: 'Local path',
-  control_points: 'Control points',
-  local_target: 'Local target',
-  robot: 'Robot',
-  trail: 'Trail',
-  start_goal: 'Start and goal',
+  heat_map: t('layer.heat_map'),
+  global_path: t('layer.global_path'),
+  local_path: t('layer.local_path'),
+  control_points: t('layer.control_points'),
+  local_target: t('layer.local_target'),
+  robot: t('layer.robot'),
+  trail: t('layer.trail'),
+  start_goal: t('layer.start_goal'),
 };
 
 export function createToolbar(root, clockRoot, mapRoot, app) {
@@ -40,9 +41,9 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     toolButtons.set(tool, b);
   }
   // ---- the brush: its size in cells or in metres, as the teacher chooses
-  const brush = el('select', { id: 'brush', 'aria-label': 'Brush size' });
-  const brushUnit = el('select', { id: 'brush-unit', 'aria-label': 'Brush size unit', title: 'Brush size in map cells or in metres' },
-    el('option', { value: 'cells' }, 'cells'), el('option', { value: 'm' }, 'm'));
+  const brush = el('select', { id: 'brush', 'aria-label': t('brush.size') });
+  const brushUnit = el('select', { id: 'brush-unit', 'aria-label': t('brush.unit'), title: t('brush.unit.title') },
+    el('option', { value: 'cells' }, t('brush.cells')), el('option', { value: 'm' }, 'm'));
   const fillBrush = () => {
     const unit = brushUnit.value;
     const sizes = BRUSHES[unit];
@@ -54,7 +55,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   brushUnit.addEventListener('change', fillBrush);
   brush.addEventListener('change', () => { app.ui.brush = { size: Number(brush.value), unit: brushUnit.value }; });
   fillBrush();
-  const brushBox = el('span', { class: 'brush', title: 'Brush: a square of this side' }, 'brush', brush, brushUnit);
+  const brushBox = el('span', { class: 'brush', title: t('brush.title') }, t('brush.label'), brush, brushUnit);
   const showTool = (tool) => {
     for (const [t, b] of toolButtons) b.setAttribute('aria-pressed', String(t === tool));
     brushBox.hidden = !(tool === 'paint' || tool === 'erase');
@@ -64,8 +65,8 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
 
   // ---- direction
   const dirButtons = {
-    forward: el('button', { type: 'button', id: 'dir-forward', class: 'seg', title: 'SetPosition Direction 1: drive forward' }, 'Forward'),
-    backward: el('button', { type: 'button', id: 'dir-backward', class: 'seg', title: 'SetPosition Direction 2: drive backward' }, 'Backward'),
+    forward: el('button', { type: 'button', id: 'dir-forward', class: 'seg', title: t('dir.forward.title') }, t('dir.forward')),
+    backward: el('button', { type: 'button', id: 'dir-backward', class: 'seg', title: t('dir.backward.title') }, t('dir.backward')),
   };
   const showDirection = () => {
     dirButtons.forward.setAttribute('aria-pressed', String(!app.ui.backward));
@@ -88,25 +89,25 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
 
   // ---- Clear, SafeMode
   const clear = el('button', {
-    type: 'button', id: 'clear', class: 'plain', title: 'Clear (000 §5.2.4.7): drop the goal and the paths; the robot stops',
-    onclick: () => { app.attempt(() => demo.clear()); app.notice.show('Clear: the goal and the paths are dropped.', 'info'); },
-  }, 'Clear');
+    type: 'button', id: 'clear', class: 'plain', title: t('clear.title'),
+    onclick: () => { app.attempt(() => demo.clear()); app.notice.show(t('clear.notice'), 'info'); },
+  }, t('clear.label'));
   const safe = el('button', {
-    type: 'button', id: 'safe-mode', class: 'plain', title: 'SafeMode: the robot halts until the next goal',
-    onclick: () => { app.attempt(() => demo.safe_mode()); app.notice.show('SafeMode: the robot halts until the next goal.', 'info'); },
-  }, 'Safe mode');
+    type: 'button', id: 'safe-mode', class: 'plain', title: t('safe.title'),
+    onclick: () => { app.attempt(() => demo.safe_mode()); app.notice.show(t('safe.notice'), 'info'); },
+  }, t('safe.label'));
 
   // ---- the clock
-  const pause = el('button', { type: 'button', id: 'pause', class: 'plain', title: 'Pause or run the simulated clock (Space)' }, 'Pause');
+  const pause = el('button', { type: 'button', id: 'pause', class: 'plain', title: t('pause.title') }, t('pause.label'));
   const togglePause = () => {
     demo.set_paused(!demo.paused());
   };
   pause.addEventListener('click', togglePause);
   const step = el('button', {
-    type: 'button', id: 'step', class: 'plain', title: 'One tick (1 ms of simulated time) while paused (.)',
+    type: 'button', id: 'step', class: 'plain', title: t('step.title'),
     onclick: () => app.attempt(() => demo.step_ticks(1)),
-  }, 'Step');
-  const speed = el('select', { id: 'speed', title: 'Simulated seconds per second' },
+  }, t('step.label'));
+  const speed = el('select', { id: 'speed', title: t('speed.title') },
     ...SPEEDS.map((s) => el('option', { value: s, selected: s === 1 }, `${s}×`)));
   speed.addEventListener('change', () => {
     const r = app.attempt(() => demo.set_speed(Number(speed.value)));
@@ -125,7 +126,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     return el('label', { class: 'layer' }, box, LAYER_NAMES[name]);
   });
   const layerMenu = el('details', { class: 'menu', id: 'layers' },
-    el('summary', { class: 'plain' }, 'Layers'),
+    el('summary', { class: 'plain' }, t('layers.label')),
     el('div', { class: 'menu-body' }, ...layerBoxes));
   // The menu opens toward whichever side of the page has room.
   layerMenu.addEventListener('toggle', () => {
@@ -135,14 +136,14 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   });
 
   // ---- zoom (over the map, top right)
-  const zoomIn = el('button', { type: 'button', id: 'zoom-in', class: 'plain', title: 'Zoom in (+; also the wheel or a pinch)', 'aria-label': 'Zoom in', onclick: () => app.stage.zoomAt(1.5) }, '+');
-  const zoomOut = el('button', { type: 'button', id: 'zoom-out', class: 'plain', title: 'Zoom out (−)', 'aria-label': 'Zoom out', onclick: () => app.stage.zoomAt(1 / 1.5) }, '−');
-  const zoomFit = el('button', { type: 'button', id: 'zoom-fit', class: 'plain', title: 'Show the whole map (0)', onclick: () => app.stage.fitView() }, 'Fit');
+  const zoomIn = el('button', { type: 'button', id: 'zoom-in', class: 'plain', title: t('zoom.in.title'), 'aria-label': t('zoom.in'), onclick: () => app.stage.zoomAt(1.5) }, '+');
+  const zoomOut = el('button', { type: 'button', id: 'zoom-out', class: 'plain', title: t('zoom.out.title'), 'aria-label': t('zoom.out'), onclick: () => app.stage.zoomAt(1 / 1.5) }, '−');
+  const zoomFit = el('button', { type: 'button', id: 'zoom-fit', class: 'plain', title: t('zoom.fit.title'), onclick: () => app.stage.fitView() }, t('zoom.fit'));
   mapRoot.append(zoomOut, zoomIn, zoomFit);
   const showZoom = () => {
     const z = demo.zoom();
     mapRoot.dataset.zoom = String(z);
-    zoomFit.textContent = z > 1.0001 ? `Fit · ${z < 10 ? z.toFixed(1) : Math.round(z)}×` : 'Fit';
+    zoomFit.textContent = z > 1.0001 ? `${t('zoom.fit')} · ${z < 10 ? z.toFixed(1) : Math.round(z)}×` : t('zoom.fit');
     zoomFit.disabled = z <= 1.0001;
     zoomOut.disabled = z <= 1.0001;
   };
@@ -150,9 +151,9 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   app.on('loaded', showZoom);
 
   root.append(
-    el('div', { class: 'group', role: 'group', 'aria-label': 'Mouse tool' }, ...toolButtons.values()),
+    el('div', { class: 'group', role: 'group', 'aria-label': t('tool.group') }, ...toolButtons.values()),
     brushBox,
-    el('div', { class: 'group', role: 'group', 'aria-label': 'Direction' }, dirButtons.forward, dirButtons.backward),
+    el('div', { class: 'group', role: 'group', 'aria-label': t('dir.group') }, dirButtons.forward, dirButtons.backward),
     el('div', { class: 'group plain-group' }, clear, safe),
     el('span', { class: 'spacer' }),
     layerMenu,
@@ -178,7 +179,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
       const paused = demo.paused();
       if (pause.dataset.paused !== String(paused)) {
         pause.dataset.paused = String(paused);
-        pause.textContent = paused ? 'Run' : 'Pause';
+        pause.textContent = paused ? t('run.label') : t('pause.label');
         pause.classList.toggle('active', paused);
         step.disabled = !paused;
       }

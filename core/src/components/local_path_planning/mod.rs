@@ -64,8 +64,8 @@ use crate::local::{
 };
 use crate::map::{Cell, GridMap, MapUpdate};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDouble,
-    TimedPosition,
+    Component, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
+    TimedDouble, TimedPosition,
 };
 
 /// After a failed plan, how long until the next attempt \[ns\] (spec §3 Decision 0.2).
@@ -703,6 +703,17 @@ impl Component for LocalPathPlanning {
 
     fn instance_name(&self) -> &str {
         &self.name
+    }
+
+    fn ports(&self) -> Vec<PortView> {
+        vec![
+            self.in_current_position.view(),
+            self.in_deviating.view(),
+            self.invent_gui_cons.view(),
+            self.bump_cons.view(),
+            self.drive_cons.view(),
+            self.invent_gui_failure.view(),
+        ]
     }
 
     fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {

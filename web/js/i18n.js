@@ -1,0 +1,94 @@
+// The page's words in English and Japanese: one catalogue per language (`i18n/en.json`,
+// `i18n/ja.json`, flat `key → text` with `{name}` placeholders); `tests/e2e/i18n.test.mjs`
+// fails if a key is missing in either. The Japanese catalogue also holds the scenarios'
+// texts (`scenario.NAME.description|lesson|task`); their English is the scenario files'.
+//
+// The language: `?lang=` in the address (a share link carries it) first, then the choice
+// kept in local storage, then the browser's language. Switching reloads the page in the
+// other language with the current set-up as a share link, so every string is drawn anew.
+export const LANGUAGES = ['en', 'ja'];
+const STORAGE_KEY = 'rtnav.lang';
+
+let lang = 'en';
+let words = {};
+let english = {};
+
+/** The language to use: the address's `lang`, the stored choice, the browser's. */
+export function chooseLanguage(search = location.search, storage = globalThis.localStorage,
+  browser = navigator.languages ?? [navigator.language]) {
+  const asked = new URLSearchParams(search).get('lang');
+  if (LANGUAGES.includes(asked)) return asked;
+  let kept = null;
+  try { kept = storage?.getItem(STORAGE_KEY); } catch { /* storage blocked: not kept */ }
+  if (LANGUAGES.includes(kept)) return kept;
+  return (browser ?? []).some((l) => String(l).toLowerCase().startsWith('ja')) ? 'ja' : 'en';
+}
+
+/** Loads the catalogues (English always: the fallback) and sets the document's language. */
+export async function loadLanguage(chosen) {
+  lang = LANGUAGES.includes(chosen) ? chosen : 'en';
+  const get = async (l) => {
+    const r = await fetch(`i18n/${l}.json`);
+    if (!r.ok) throw new Error(`i18n/${l}.json: HTTP ${r.status}`);
+    return r.json();
+  };
+  english = await get('en');
+  words = lang === 'en' ? english : await get(lang);
+  document.documentElement.lang = lang;
+  return lang;
+}
+
+/** The language in use. */
+export function language() {
+  return lang;
+}
+
+/** The text of `key` with `{name}` placeholders filled from `vars`. */
+export function t(key, vars = {}) {
+  const text = words[key] ?? english[key] ?? key;
+  return text.replace(/\{(\w+)\}/g, (m, name) => (name in vars ? String(vars[name]) : m));
+}
+
+/** Whether the catalogue has `key` (the scenarios' Japanese texts are optional lookups). */
+export function has(key) {
+  return key in words;
+}
+
+/**
+ * Fills `[data-i18n]` (text), `[data-i18n-title]`, `[data-i18n-label]` (a tab's label) and
+ * `[data-i18n-aria-label]` under `root`.
+ */
+export function translateStatic(root = document) {
+  for (const node of root.querySelectorAll('[data-i18n]')) node.textContent = t(node.dataset.i18n);
+  for (const node of root.querySelectorAll('[data-i18n-title]')) node.title = t(node.dataset.i18nTitle);
+  for (const node of root.querySelectorAll('[data-i18n-label]')) node.dataset.label = t(node.dataset.i18nLabel);
+  for (const node of root.querySelectorAll('[data-i18n-aria-label]')) {
+    node.setAttribute('aria-label', t(node.dataset.i18nAriaLabel));
+  }
+  document.title = t('page.title');
+}
+
+/** Keeps `next` and reloads the page in it, with `share` (a set-up token) if given. */
+export function switchLanguage(next, share = null) {
+  try { localStorage.setItem(STORAGE_KEY, next); } catch { /* not kept: the address says it */ }
+  const params = new URLSearchParams(location.search);
+  params.set('lang', next);
+  if (share) params.set('share', share);
+  location.search = params.toString();
+}
+
+/** A number as the language writes it (the core's own numbers are already text). */
+export function num(value, digits) {
+  return Number(value).toLocaleString(lang === 'ja' ? 'ja-JP' : 'en-GB', {
+    maximumFractionDigits: digits, minimumFractionDigits: 0, useGrouping: false,
+  });
+}
+
+// The catalogues are loaded before any module that imports this one runs (top-level await):
+// the modules' own tables of labels are made in the chosen language.
+try {
+  await loadLanguage(chooseLanguage());
+} catch (e) {
+  // Without catalogues the page shows the keys; the crash box says why.
+  console.error(`rtnav: the language catalogues did not load: ${e}`);
+}

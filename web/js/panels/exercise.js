@@ -1,0 +1,79 @@
+// The exercise of a scenario (issue 17): its task, the parameters it lets change, the
+// checks as a live checklist and the verdict at the end. Every check is evaluated by the
+// core (`Demo.exercise_json`, `rtnav::system::ExerciseWatch`) from the facts and samples
+// of the run, so `rtnav check` gives the same verdict; this panel only shows them.
+import { el, setText } from '../dom.js';
+import { t, num, has } from '../i18n.js';
+
+/** How often the checklist is read while the robot drives [ms]. */
+const EVERY_MS = 150;
+
+/** A check's line in the language: `check.KIND` with the check's numbers. */
+export function checkText(check) {
+  const { check: kind, ...numbers } = check;
+  const vars = {};
+  for (const [k, v] of Object.entries(numbers)) vars[k] = typeof v === 'number' ? num(v, 4) : v;
+  return t(`check.${kind}`, vars);
+}
+
+/** What was measured, in the check's unit. */
+function measuredText(c) {
+  if (c.changed?.length) return t('exercise.changed', { names: c.changed.join(', ') });
+  if (c.measured === null || c.measured === undefined) return '';
+  return t(`measured.${c.check.check}`, { value: num(c.measured, 3) });
+}
+
+export function createExercisePanel(root, app) {
+  const { demo } = app;
+  const task = el('p', { class: 'exercise-task' });
+  const allowed = el('p', { class: 'exercise-allowed' });
+  const list = el('ul', { class: 'exercise-checks', 'aria-live': 'polite' });
+  const verdict = el('p', { class: 'exercise-verdict', role: 'status' });
+  const title = el('strong', {}, t('exercise.title'));
+  root.replaceChildren(el('div', { class: 'exercise-head' }, title, ' ', task), allowed, list, verdict);
+  let last = '';
+  let lastAt = -Infinity;
+
+  function scenarioTask(status) {
+    const s = JSON.parse(demo.scenario_json());
+    const key = `scenario.${s?.name}.task`;
+    const text = t(key);
+    return text === key ? status.task : text;
+  }
+
+  function show(status) {
+    root.hidden = !status;
+    if (!status) return;
+    setText(task, scenarioTask(status));
+    const may = status.may_change.length
+      ? t('exercise.may_change', { names: status.may_change.join(', ') })
+      : '';
+    const acts = status.actions.length
+      ? t('exercise.actions', { names: status.actions.map((a) => (has(`action.${a}`) ? t(`action.${a}`) : a)).join(t('exercise.then')) })
+      : '';
+    setText(allowed, [may, acts].filter(Boolean).join(' '));
+    list.replaceChildren(...status.checks.map((c) => el('li', {
+      class: 'exercise-check', dataset: { state: c.state, check: c.check.check },
+    },
+    el('span', { class: 'exercise-mark', 'aria-hidden': 'true' }, c.state === 'passed' ? '✓' : c.state === 'failed' ? '✗' : '○'),
+    el('span', { class: 'exercise-text' }, checkText(c.check)),
+    el('span', { class: 'exercise-measured' }, measuredText(c)),
+    el('span', { class: 'visually-hidden' }, t(`exercise.state.${c.state}`)))));
+    verdict.dataset.verdict = status.verdict;
+    setText(verdict, status.ended_after === null
+      ? t(`exercise.verdict.${status.verdict}`)
+      : t(`exercise.verdict.${status.verdict}_after`, { s: num(status.ended_after, 1) }));
+  }
+
+  function update(now = performance.now(), force = false) {
+    if (!force && now - lastAt < EVERY_MS) return;
+    lastAt = now;
+    const json = demo.exercise_json();
+    if (json === last) return;
+    last = json;
+    show(JSON.parse(json));
+  }
+
+  app.on('loaded', () => update(performance.now(), true));
+  return { update };
+}

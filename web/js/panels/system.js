@@ -1,0 +1,434 @@
+// The System tab (issue 19): the system as RT System Editor draws it — every RT-component a
+// box in its state's colour, its data ports and service ports as markers on the box, the
+// connections as lines — laid out from the core's own description (`demo.system_json()`,
+// rtnav::system::SystemGraph), never drawn by hand: a component, port or connection the core
+// adds appears here.
+//
+// Live: a port whose count grew pulses (at most every UPDATE_MS, whatever the speed); hovering
+// or tapping a port shows its IDL type (or interface) and its newest sample with its
+// timestamp, or a service port's last call. Acting on the picture: a tapped box gets
+// Activate, Deactivate, Reset and Inject fault (RT System Editor's context menu); a tapped
+// port lists its connections, and a data connection between two components can be cut and
+// restored — a request the core logs (`Input::CutConnection`).
+import { el, setText, textOn } from '../dom.js';
+
+const SVG = 'http://www.w3.org/2000/svg';
+/** How often the view reads the description while shown [ms]. */
+const UPDATE_MS = 250;
+/** The diagram's units: box width, header, status line and port row heights, gaps. */
+const BOX_W = 210;
+const HEAD_H = 22;
+const STATUS_H = 14;
+const ROW_H = 13;
+const GAP_X = 64;
+const GAP_Y = 26;
+const PAD = 12;
+/** Which side of the box a port sits on. */
+const LEFT = new Set(['in', 'provided']);
+const KIND_WORDS = { in: 'data in', out: 'data out', provided: 'service provided', required: 'service required' };
+const GUI_NOTE = 'InventGUI is the person\'s side (this page, the command line, a scenario\'s timeline): it makes '
+  + 'the service calls and is told the paths, failures, safety stops and bumps. It is not an RT-component.';
+
+function svg(tag, attrs = {}, ...children) {
+  const node = document.createElementNS(SVG, tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (v === undefined || v === null || v === false) continue;
+    node.setAttribute(k, String(v));
+  }
+  node.append(...children.filter((c) => c !== null && c !== undefined));
+  return node;
+}
+
+const portKey = (component, port) => `${component}.${port}`;
+
+/** Boxes in the description's order (data-flow order), `cols` to a row; ports in rows. */
+function layout(graph, cols) {
+  const boxes = new Map();
+  const rows = [];
+  graph.components.forEach((c, i) => {
+    const left = c.ports.filter((p) => LEFT.has(p.kind));
+    const right = c.ports.filter((p) => !LEFT.has(p.kind));
+    const h = HEAD_H + STATUS_H + (left.length + right.length) * ROW_H + 6;
+    const row = Math.floor(i / cols);
+    (rows[row] ??= []).push({ c, left, right, h, col: i % cols });
+  });
+  const ports = new Map();
+  let y = PAD;
+  for (const row of rows) {
+    const rowH = Math.max(...row.map((b) => b.h));
+    for (const b of row) {
+      const x = PAD + b.col * (BOX_W + GAP_X);
+      boxes.set(b.c.name, { ...b, x, y });
+      let py = y + HEAD_H + STATUS_H + ROW_H / 2 + 2;
+      for (const p of b.left) {
+        ports.set(portKey(b.c.name, p.name), { x, y: py, left: true, port: p, box: b.c.name });
+        py += ROW_H;
+      }
+      for (const p of b.right) {
+        ports.set(portKey(b.c.name, p.name), { x: x + BOX_W, y: py, left: false, port: p, box: b.c.name });
+        py += ROW_H;
+      }
+    }
+    y += rowH + GAP_Y;
+  }
+  const width = PAD * 2 + cols * BOX_W + (cols - 1) * GAP_X;
+  return { boxes, ports, width, height: y - GAP_Y + PAD };
+}
+
+/** A curve from an out-port (right edge) to an in-port (left edge), around the boxes' sides. */
+function curve(a, b) {
+  const d = Math.max(36, Math.abs(b.x - a.x) / 2);
+  const ax = a.left ? a.x - d : a.x + d;
+  const bx = b.left ? b.x - d : b.x + d;
+  return `M${a.x},${a.y} C${ax},${a.y} ${bx},${b.y} ${b.x},${b.y}`;
+}
+
+function describePort(component, p) {
+  const head = `${component}.${p.name} · ${KIND_WORDS[p.kind] ?? p.kind} · ${p.interface}`;
+  const ops = p.operations?.length ? `operations: ${p.operations.join(', ')}` : null;
+  const unit = p.kind === 'provided' || p.kind === 'required' ? 'calls' : 'samples';
+  const last = p.last ? p.last.text : p.kind === 'provided' || p.kind === 'required' ? 'no call yet' : 'no sample yet';
+  return [head, ops, last, `${p.count} ${unit}`].filter(Boolean);
+}
+
+export function createSystemPanel(root, app) {
+  const { demo } = app;
+  let graph = null;
+  let geometry = null;
+  let cols = 0;
+  let shape = '';
+  let last = -Infinity;
+  let selectedBox = null;
+  let selectedPort = null;
+  let hoverPort = null;
+  const counts = new Map();
+  const portNodes = new Map();
+  const boxNodes = new Map();
+  const lineNodes = new Map();
+  let components = [];
+
+  const request = (what, fn) => {
+    if (/^(Reset|Activate)/.test(what)) app.notice.endState();
+    const r = app.attempt(fn);
+    if (!r.ok) {
+      app.notice.show(`${what} refused: ${r.error}`, 'error');
+      app.log.page(`${what} refused: ${r.error}`, 'warn');
+    }
+    app.emit('changed');
+    last = -Infinity;
+    return r;
+  };
+
+  // ------------------------------------------------------------------ the frame
+
+  const picture = svg('svg', { class: 'system-svg', role: 'img', 'aria-label': 'The RT-components, their ports and connections' });
+  const wrap = el('div', { class: 'system-wrap', id: 'system-diagram' }, picture);
+  const tooltip = el('div', { class: 'system-tip', id: 'system-tip', role: 'tooltip', hidden: true });
+  wrap.append(tooltip);
+
+  const actTitle = el('span', { class: 'system-act-title' });
+  const buttons = {
+    activate: el('button', { type: 'button', 'data-act': 'activate' }, 'Activate'),
+    deactivate: el('button', { type: 'button', class: 'secondary', 'data-act': 'deactivate' }, 'Deactivate'),
+    reset: el('button', { type: 'button', class: 'secondary', 'data-act': 'reset' }, 'Reset'),
+    fault: el('button', { type: 'button', class: 'danger', 'data-act': 'fault' }, 'Inject fault'),
+  };
+  for (const [act, b] of Object.entries(buttons)) {
+    b.addEventListener('click', () => {
+      if (!selectedBox) return;
+      const name = selectedBox;
+      if (act === 'fault') request(`Inject fault into ${name}`, () => demo.inject_fault(name));
+      else request(`${b.textContent} ${name}`, () => demo[act](name));
+    });
+  }
+  const actions = el('div', { class: 'system-actions', id: 'system-actions', role: 'group', 'aria-label': 'The selected component' },
+    actTitle, el('span', { class: 'system-act-buttons' }, ...Object.values(buttons)));
+
+  const details = el('div', { class: 'system-details', id: 'system-details', 'aria-live': 'polite' });
+
+  root.append(
+    el('div', { class: 'panel-head' },
+      el('h2', {}, 'System'),
+      el('span', { class: 'legend' },
+        el('span', { class: 'swatch', style: '--c:#0000ff' }), 'Inactive',
+        el('span', { class: 'swatch', style: '--c:#00ff00' }), 'Active',
+        el('span', { class: 'swatch', style: '--c:#ff0000' }), 'Error')),
+    el('p', { class: 'panel-hint' },
+      'As RT System Editor shows it, from the core\'s own description. ■ data port, ● service port; '
+      + 'solid lines carry data, dashed ones service calls. Tap a box to act on it, a port for its last sample and its connections.'),
+    actions,
+    wrap,
+    details,
+  );
+
+  // ------------------------------------------------------------------ drawing
+
+  function build() {
+    picture.replaceChildren();
+    portNodes.clear();
+    boxNodes.clear();
+    lineNodes.clear();
+    geometry = layout(graph, cols);
+    picture.setAttribute('viewBox', `0 0 ${geometry.width} ${geometry.height}`);
+    picture.style.aspectRatio = `${geometry.width} / ${geometry.height}`;
+    const lines = svg('g', { class: 'sys-lines' });
+    for (const e of graph.connections) {
+      const a = geometry.ports.get(portKey(e.from.component, e.from.port));
+      const b = geometry.ports.get(portKey(e.to.component, e.to.port));
+      if (!a || !b) continue;
+      const path = svg('path', { d: curve(a, b), class: `sys-line ${e.kind}`, 'data-id': e.id });
+      path.append(svg('title', {}, `${e.id.replace('->', ' → ')} (${e.interface})`));
+      lines.append(path);
+      lineNodes.set(e.id, path);
+    }
+    const boxes = svg('g', { class: 'sys-boxes' });
+    for (const [name, b] of geometry.boxes) {
+      const g = svg('g', { class: `sys-box${b.c.rtc ? '' : ' gui'}`, 'data-component': name, tabindex: 0, role: 'button',
+        'aria-label': b.c.rtc ? `${b.c.instance_name}: select` : 'InventGUI' });
+      const body = svg('rect', { x: b.x, y: b.y, width: BOX_W, height: b.h, rx: 5, class: 'sys-body' });
+      const head = svg('rect', { x: b.x, y: b.y, width: BOX_W, height: HEAD_H, rx: 5, class: 'sys-head' });
+      const title = svg('text', { x: b.x + 7, y: b.y + 15, class: 'sys-title' }, b.c.instance_name);
+      const state = svg('text', { x: b.x + BOX_W - 7, y: b.y + 15, class: 'sys-state', 'text-anchor': 'end' }, b.c.state ?? '');
+      const status = svg('text', { x: b.x + 7, y: b.y + HEAD_H + 11, class: 'sys-status' }, b.c.rtc ? '' : 'the person: page, CLI, timeline');
+      g.append(body, head, title, state, status);
+      for (const p of [...b.left, ...b.right]) {
+        const at = geometry.ports.get(portKey(name, p.name));
+        const service = p.kind === 'provided' || p.kind === 'required';
+        const marker = service
+          ? svg('circle', { cx: at.x, cy: at.y, r: 4, class: `sys-port ${p.kind}` })
+          : svg('rect', { x: at.x - 4, y: at.y - 4, width: 8, height: 8, class: `sys-port ${p.kind}` });
+        const label = svg('text', {
+          x: at.left ? at.x + 8 : at.x - 8, y: at.y + 3.2, class: `sys-label ${p.kind}`,
+          'text-anchor': at.left ? 'start' : 'end',
+        }, p.name);
+        // A wide, invisible target: the whole row, so a finger can hit it.
+        const hit = svg('rect', {
+          x: b.x, y: at.y - ROW_H / 2, width: BOX_W, height: ROW_H, class: 'sys-hit',
+          'data-port': p.name, 'data-component': name, 'data-kind': p.kind,
+        });
+        const pg = svg('g', { class: 'sys-port-row', 'data-port': p.name, 'data-component': name, 'data-kind': p.kind }, label, marker, hit);
+        g.append(pg);
+        portNodes.set(portKey(name, p.name), { g: pg, marker });
+      }
+      boxNodes.set(name, { g, head, title, state, status });
+      boxes.append(g);
+    }
+    picture.append(lines, boxes);
+  }
+
+  function port(component, name) {
+    return graph?.components.find((c) => c.name === component)?.ports.find((p) => p.name === name);
+  }
+
+  function showTip(key, event) {
+    const at = geometry?.ports.get(key);
+    const node = portNodes.get(key);
+    if (!at || !node) return;
+    hoverPort = key;
+    const p = port(at.box, at.port.name);
+    tooltip.replaceChildren(...describePort(at.box, p).map((line, i) => el('div', { class: i === 0 ? 'tip-head' : null }, line)));
+    tooltip.hidden = false;
+    const r = node.marker.getBoundingClientRect();
+    const w = wrap.getBoundingClientRect();
+    const x = (event?.clientX ?? r.left + r.width / 2) - w.left + wrap.scrollLeft;
+    const y = r.bottom - w.top + wrap.scrollTop + 6;
+    tooltip.style.left = `${Math.max(0, Math.min(x - 40, wrap.clientWidth - tooltip.offsetWidth - 4))}px`;
+    tooltip.style.top = `${y}px`;
+  }
+
+  function hideTip() {
+    hoverPort = null;
+    tooltip.hidden = true;
+  }
+
+  function selectPort(key) {
+    selectedPort = key;
+    const at = geometry.ports.get(key);
+    if (at && graph.components.find((c) => c.name === at.box)?.rtc) selectedBox = at.box;
+    paint();
+  }
+
+  picture.addEventListener('pointerover', (e) => {
+    const row = e.target.closest?.('.sys-port-row');
+    if (row) showTip(portKey(row.dataset.component, row.dataset.port), e);
+  });
+  picture.addEventListener('pointerout', (e) => {
+    const row = e.target.closest?.('.sys-port-row');
+    if (row && !row.contains(e.relatedTarget)) hideTip();
+  });
+  picture.addEventListener('click', (e) => {
+    const row = e.target.closest?.('.sys-port-row');
+    if (row) {
+      const key = portKey(row.dataset.component, row.dataset.port);
+      selectPort(key);
+      showTip(key, e);
+      return;
+    }
+    const box = e.target.closest?.('.sys-box');
+    if (box) {
+      const c = graph.components.find((x) => x.name === box.dataset.component);
+      selectedBox = c?.rtc ? c.name : null;
+      selectedPort = null;
+      if (!c?.rtc) details.replaceChildren(el('p', { class: 'panel-hint' }, GUI_NOTE));
+      paint();
+    }
+  });
+  picture.addEventListener('keydown', (e) => {
+    if (e.key !== 'Enter' && e.key !== ' ') return;
+    const box = e.target.closest?.('.sys-box');
+    if (!box) return;
+    const c = graph.components.find((x) => x.name === box.dataset.component);
+    selectedBox = c?.rtc ? c.name : null;
+    selectedPort = null;
+    paint();
+    e.preventDefault();
+  });
+
+  // ------------------------------------------------------------------ live state
+
+  function paintDetails() {
+    if (!selectedPort) {
+      if (details.dataset.port) details.replaceChildren();
+      delete details.dataset.port;
+      return;
+    }
+    const at = geometry.ports.get(selectedPort);
+    const p = at && port(at.box, at.port.name);
+    if (!p) return;
+    const lines = describePort(at.box, p);
+    const conns = graph.connections.filter((e) => portKey(e.from.component, e.from.port) === selectedPort
+      || portKey(e.to.component, e.to.port) === selectedPort);
+    const sig = `${selectedPort}|${conns.map((e) => `${e.id}:${e.cut}`).join(',')}`;
+    if (details.dataset.port !== sig) {
+      details.dataset.port = sig;
+      const list = el('ul', { class: 'system-conns' });
+      for (const e of conns) {
+        const li = el('li', { 'data-id': e.id, 'data-cut': String(e.cut) },
+          el('span', { class: 'conn-name' }, e.id.replace('->', ' → ')),
+          el('span', { class: 'conn-count' }));
+        if (e.cuttable) {
+          const b = el('button', { type: 'button', class: e.cut ? 'restore' : 'cut danger' }, e.cut ? 'Restore' : 'Cut');
+          b.addEventListener('click', () => {
+            const what = `${e.cut ? 'Restore' : 'Cut'} ${e.id.replace('->', ' → ')}`;
+            request(what, () => (e.cut ? demo.restore_connection(e.id) : demo.cut_connection(e.id)));
+          });
+          li.append(b);
+        }
+        list.append(li);
+      }
+      details.replaceChildren(
+        el('div', { class: 'system-port-head' }, lines[0]),
+        el('div', { class: 'system-port-sample', id: 'system-sample' }),
+        el('div', { class: 'system-port-count' }),
+        conns.length ? list : el('p', { class: 'panel-hint small' }, 'Not connected.'),
+      );
+    }
+    setText(details.querySelector('.system-port-sample'), lines.slice(1, -1).join(' · '));
+    setText(details.querySelector('.system-port-count'), lines[lines.length - 1]);
+    for (const li of details.querySelectorAll('.system-conns li')) {
+      const e = graph.connections.find((x) => x.id === li.dataset.id);
+      if (e) setText(li.querySelector('.conn-count'), e.cut ? 'cut' : `${e.carried} ${e.kind === 'service' ? 'calls' : 'samples'}`);
+    }
+  }
+
+  function paint() {
+    if (!graph) return;
+    const info = new Map(components.map((c) => [c.name, c]));
+    for (const c of graph.components) {
+      const node = boxNodes.get(c.name);
+      if (!node) continue;
+      const ci = info.get(c.name);
+      const colour = ci?.colour ?? '#c9ced8';
+      node.g.dataset.state = c.state ?? 'none';
+      node.g.classList.toggle('selected', c.name === selectedBox);
+      node.head.style.fill = colour;
+      node.g.style.setProperty('--state', colour);
+      const ink = textOn(colour);
+      node.title.style.fill = ink;
+      node.state.style.fill = ink;
+      if (c.state) setText(node.state, `${c.state} · ${c.rate_hz} Hz`);
+      if (ci) {
+        const status = ci.state === 'Error' && ci.last_error ? ci.last_error : ci.status;
+        const short = status.length > 38 ? `${status.slice(0, 37)}…` : status;
+        setText(node.status, short);
+        node.status.dataset.full = status;
+      }
+      for (const p of c.ports) {
+        const key = portKey(c.name, p.name);
+        const pn = portNodes.get(key);
+        if (!pn) continue;
+        const before = counts.get(key);
+        counts.set(key, p.count);
+        pn.g.classList.toggle('selected', key === selectedPort);
+        if (before !== undefined && p.count !== before) {
+          // A short pulse; restarted so that a port fed at every update pulses each time.
+          pn.marker.classList.remove('pulse');
+          void pn.marker.getBoundingClientRect();
+          pn.marker.classList.add('pulse');
+        }
+      }
+    }
+    for (const e of graph.connections) {
+      const line = lineNodes.get(e.id);
+      if (!line) continue;
+      line.classList.toggle('cut', e.cut);
+      const touches = selectedPort && (portKey(e.from.component, e.from.port) === selectedPort
+        || portKey(e.to.component, e.to.port) === selectedPort);
+      line.classList.toggle('hot', Boolean(touches));
+    }
+    // The selected box's actions, as RT System Editor's context menu.
+    const ci = selectedBox ? info.get(selectedBox) : null;
+    actions.dataset.component = selectedBox ?? '';
+    setText(actTitle, ci ? `${ci.instance_name} · ${ci.state}` : 'Tap a component to act on it');
+    buttons.activate.disabled = !ci || ci.state !== 'Inactive';
+    buttons.deactivate.disabled = !ci || ci.state !== 'Active';
+    buttons.reset.disabled = !ci || ci.state !== 'Error';
+    buttons.fault.disabled = !ci || !(ci.state === 'Inactive' || ci.state === 'Active') || ci.fault_pending;
+    setText(buttons.fault, ci?.fault_pending ? 'Fault pending…' : 'Inject fault');
+    paintDetails();
+    if (hoverPort) {
+      const at = geometry.ports.get(hoverPort);
+      const p = at && port(at.box, at.port.name);
+      if (p) {
+        const lines = describePort(at.box, p);
+        [...tooltip.children].forEach((d, i) => setText(d, lines[i] ?? ''));
+      }
+    }
+  }
+
+  function columns() {
+    const w = wrap.clientWidth || root.clientWidth || 360;
+    return Math.max(1, Math.min(3, Math.floor((w + 40) / 300)));
+  }
+
+  function refresh(force) {
+    const r = app.attempt(() => JSON.parse(demo.system_json()));
+    if (!r.ok) return;
+    graph = r.value;
+    const c = columns();
+    const s = `${c}|${graph.components.map((x) => `${x.name}:${x.ports.map((p) => p.name).join(',')}`).join(';')}|${graph.connections.length}`;
+    if (force || s !== shape) {
+      cols = c;
+      shape = s;
+      build();
+    }
+    paint();
+  }
+
+  new ResizeObserver(() => {
+    if (graph && columns() !== cols) refresh(true);
+  }).observe(wrap);
+  app.on('changed', () => { last = -Infinity; });
+
+  return {
+    /** Reads the description at most every UPDATE_MS, and only while the tab is shown. */
+    update(now, visible, comps) {
+      components = comps ?? components;
+      if (!visible || now - last < UPDATE_MS) return;
+      last = now;
+      refresh(false);
+    },
+    /** The description last read (for the end-to-end test). */
+    graph: () => graph,
+  };
+}
