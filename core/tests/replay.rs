@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use rtnav::system::{
     ComponentKind, Input, MAX_CHECKPOINTS, MapSource, MarkKind, MemoryResolver, Replay, Scenario,
-    Session, compare, setup_with,
+    Session, Verdict, compare, setup_with,
 };
 
 fn root() -> &'static Path {
@@ -294,4 +294,61 @@ fn any_seek_on_a_five_minute_run_is_fast() {
     assert!(worst < limit, "{worst} ms");
     s.seek(end).unwrap();
     assert_eq!(hash(&s), hash_end);
+}
+
+#[test]
+fn a_seek_back_takes_the_exercise_back_too() {
+    let mut s = loaded("ex_backward_dock");
+    s.apply(&Input::ActivateAll).unwrap();
+    s.set_speed(16.0).unwrap();
+    let mut frames = 0;
+    while s.exercise().unwrap().verdict == Verdict::Running
+        || s.exercise().unwrap().verdict == Verdict::Waiting
+    {
+        s.advance(100.0);
+        frames += 1;
+        assert!(frames < 2_000, "the exercise never ended");
+    }
+    let ended = s.exercise().unwrap();
+    let end_ns = s.system().time_ns();
+    // Back to two seconds into the drive: nothing decided after then is kept ...
+    s.seek(2_000_000_000).unwrap();
+    assert_eq!(s.exercise().unwrap().verdict, Verdict::Running);
+    // ... and forward again, the same verdict as the straight run.
+    s.seek(end_ns).unwrap();
+    assert_eq!(s.exercise().unwrap(), ended);
+}
+
+#[test]
+fn a_cut_connection_is_recorded_and_seeking_keeps_when_it_was_cut() {
+    const TARGET_VELOCITY: &str = "DriveControl.TargetVelocity->MotorControl.TargetVelocity";
+    let cut_at = |s: &Session| {
+        let graph = s.system().wiring().graph();
+        let c = graph.connections.iter().find(|c| c.id == TARGET_VELOCITY);
+        c.map(|c| (c.cut, c.carried)).unwrap()
+    };
+    let mut s = loaded("open_field");
+    s.apply(&Input::ActivateAll).unwrap();
+    s.step_ticks(3_000);
+    s.apply(&Input::CutConnection {
+        connection: TARGET_VELOCITY.to_owned(),
+    })
+    .unwrap();
+    s.step_ticks(3_000);
+    let (cut, carried) = cut_at(&s);
+    assert!(cut);
+    let replay = s.replay().unwrap();
+    assert!(
+        replay
+            .inputs
+            .iter()
+            .any(|t| matches!(&t.input, Input::CutConnection { .. })),
+        "the cut is in the replay"
+    );
+    s.seek(2_000_000_000).unwrap();
+    assert!(!cut_at(&s).0, "before the cut");
+    s.seek(5_000_000_000).unwrap();
+    assert!(cut_at(&s).0, "after the cut");
+    s.seek(6_000_000_000).unwrap();
+    assert_eq!(cut_at(&s), (cut, carried));
 }

@@ -20,6 +20,7 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use super::events::EventKind;
+use super::exercise_watch::ExerciseWatch;
 use super::input::Input;
 use super::record::Record;
 use super::replay::{Replay, TimedInput};
@@ -79,12 +80,23 @@ impl Mark {
     }
 }
 
+/// What a history starts from: the system, its timeline, the map edits and the exercise's
+/// watch.
+pub(super) type Parts<'a> = (
+    &'a System,
+    &'a Timeline,
+    &'a BTreeMap<(i64, i64), i16>,
+    Option<&'a ExerciseWatch>,
+);
+
 /// Everything of a session that changes as it runs (what a checkpoint holds).
 #[derive(Debug)]
 pub(super) struct State {
     pub system: System,
     pub timeline: Timeline,
     pub edits: BTreeMap<(i64, i64), i16>,
+    /// The exercise's watch as it was then (a seek back must not keep later verdicts).
+    pub exercise: Option<ExerciseWatch>,
 }
 
 /// The telemetry samples a checkpoint keeps: the plots' longest window at the default 50 Hz
@@ -98,6 +110,7 @@ impl State {
         system: &System,
         timeline: &Timeline,
         edits: &BTreeMap<(i64, i64), i16>,
+        exercise: Option<&ExerciseWatch>,
     ) -> Option<Self> {
         let mut system = system.try_clone()?;
         system.trim_telemetry(CHECKPOINT_SAMPLES);
@@ -105,11 +118,17 @@ impl State {
             system,
             timeline: timeline.clone(),
             edits: edits.clone(),
+            exercise: exercise.cloned(),
         })
     }
 
     fn try_clone(&self) -> Option<Self> {
-        Self::copy_of(&self.system, &self.timeline, &self.edits)
+        Self::copy_of(
+            &self.system,
+            &self.timeline,
+            &self.edits,
+            self.exercise.as_ref(),
+        )
     }
 }
 
@@ -166,7 +185,7 @@ impl History {
     /// replay up to `end_ns`.
     pub fn new(
         setup: Setup,
-        (system, timeline, edits): (&System, &Timeline, &BTreeMap<(i64, i64), i16>),
+        (system, timeline, edits, exercise): Parts<'_>,
         inputs: Vec<TimedInput>,
         end_ns: u64,
     ) -> Self {
@@ -185,7 +204,7 @@ impl History {
             mark_cursor: system.record().event_count(),
             end_ns,
         };
-        h.checkpoint(system, timeline, edits);
+        h.checkpoint(system, timeline, edits, exercise);
         h
     }
 
@@ -233,8 +252,9 @@ impl History {
         system: &System,
         timeline: &Timeline,
         edits: &BTreeMap<(i64, i64), i16>,
+        exercise: Option<&ExerciseWatch>,
     ) -> bool {
-        let Some(copy) = State::copy_of(system, timeline, edits) else {
+        let Some(copy) = State::copy_of(system, timeline, edits, exercise) else {
             return false;
         };
         self.checkpoints.push(Checkpoint {

@@ -359,7 +359,12 @@ impl Session {
         self.history = self.scenario().map(Setup::of).map(|setup| {
             History::new(
                 setup,
-                (&self.system, &self.timeline, &self.edits),
+                (
+                    &self.system,
+                    &self.timeline,
+                    &self.edits,
+                    self.exercise.as_ref(),
+                ),
                 Vec::new(),
                 0,
             )
@@ -484,7 +489,12 @@ impl Session {
         self.edits = setup.edits.iter().map(|&(x, y, v)| ((x, y), v)).collect();
         self.history = Some(History::new(
             setup.clone(),
-            (&self.system, &self.timeline, &self.edits),
+            (
+                &self.system,
+                &self.timeline,
+                &self.edits,
+                self.exercise.as_ref(),
+            ),
             Vec::new(),
             0,
         ));
@@ -569,7 +579,12 @@ impl Session {
             let mut stop = target_ns;
             if let Some(h) = &mut self.history {
                 if h.wants_checkpoint(now) {
-                    h.checkpoint(&self.system, &self.timeline, &self.edits);
+                    h.checkpoint(
+                        &self.system,
+                        &self.timeline,
+                        &self.edits,
+                        self.exercise.as_ref(),
+                    );
                 }
                 stop = stop.min(h.next_stop(now));
             }

@@ -72,11 +72,17 @@ impl Session {
         })?;
         self.history = Some(History::new(
             replay.setup.clone(),
-            (&self.system, &self.timeline, &self.edits),
+            (
+                &self.system,
+                &self.timeline,
+                &self.edits,
+                self.exercise.as_ref(),
+            ),
             replay.inputs.clone(),
             replay.end_ns,
         ));
         self.run_to(replay.end_ns);
+        self.look();
         let telemetry = self.system.record().telemetry();
         let hash = telemetry.trace_hash();
         let samples = telemetry.total();
@@ -109,10 +115,12 @@ impl Session {
             self.system = state.system;
             self.timeline = state.timeline;
             self.edits = state.edits;
+            self.exercise = state.exercise;
             self.events_seen = 0;
             self.clock.pending_ns = 0;
         }
         self.run_to(target);
+        self.look();
         Ok(())
     }
 
