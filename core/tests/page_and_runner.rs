@@ -73,6 +73,10 @@ fn the_pages_set_up_driven_to_the_end_gives_the_runners_trace() {
             "{}: the page and the runner differ",
             scenario.name
         );
-        assert_ne!(outcome.kind, OutcomeKind::TimeLimit, "{}", scenario.name);
+        // A scenario ends before its time limit; an exercise as written may not (the
+        // student's change is what makes it arrive: `ex_model_offset`).
+        if scenario.exercise.is_none() {
+            assert_ne!(outcome.kind, OutcomeKind::TimeLimit, "{}", scenario.name);
+        }
     }
 }

@@ -349,9 +349,32 @@ fn decode(b: &mut Bytes<'_>, lifecycle: bool) -> (String, Op) {
                 Box::new(move |sys| ok(sys.apply(&Input::LoadConf { text: text.clone() }))),
             )
         }
-        11 => match b.below(3) {
+        11 => match b.below(5) {
             0 => input(Input::Clear),
             1 => input(Input::SafeMode),
+            pick @ (2 | 3) => {
+                // A connection of the system's own description (any kind: those that may
+                // not be cut must be refused), or a name it does not have.
+                let which = b.below(40);
+                let cut = pick == 2;
+                (
+                    format!(
+                        "{}Connection(#{which})",
+                        if cut { "Cut" } else { "Restore" }
+                    ),
+                    Box::new(move |sys| {
+                        let connection = sys.wiring().graph().connections.get(which).map_or_else(
+                            || format!("No.Such->Connection.{which}"),
+                            |c| c.id.clone(),
+                        );
+                        ok(sys.apply(&if cut {
+                            Input::CutConnection { connection }
+                        } else {
+                            Input::RestoreConnection { connection }
+                        }))
+                    }),
+                )
+            }
             _ => {
                 let capacity = *[0, 1, 2, 100, 65_536].get(b.below(5)).unwrap_or(&1);
                 (
