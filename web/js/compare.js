@@ -6,6 +6,7 @@
 // (Σ|τ·ω|·Δt). The runs are the core's (`CompareView`, `Comparison`); the page draws.
 import { CompareView } from '../pkg/rtnav_wasm.js';
 import { el } from './dom.js';
+import { t, has } from './i18n.js';
 
 const WIDTH = 640;
 const HEIGHT = 400;
@@ -14,35 +15,56 @@ const HEIGHT = 400;
 export function createCompare(formRoot, viewRoot, app) {
   const { demo } = app;
   let current = null;
+  // The table's rows and values as the core names them (`Comparison::rows`), in the page's
+  // language; `data-measure` keeps the core's name.
+  const ROWS = {
+    configuration: t('compare.row.configuration'),
+    outcome: t('compare.row.outcome'),
+    'time to goal': t('compare.row.time_to_goal'),
+    'path length': t('compare.row.path_length'),
+    'min clearance': t('compare.row.min_clearance'),
+    'arrival heading error': t('compare.row.arrival_heading_error'),
+    'final heading error': t('compare.row.final_heading_error'),
+    replans: t('compare.row.replans'),
+    'energy Σ|τ·ω|·Δt': t('compare.row.energy'),
+    'trace hash': t('compare.row.trace_hash'),
+  };
+  const cell = (measure, text) => {
+    if (measure === 'outcome' && has(`compare.outcome.${text}`)) return t(`compare.outcome.${text}`);
+    if (measure === 'configuration' && text === 'as written') return t('compare.as_written');
+    const replans = measure === 'replans' && /^(\d+) local, (\d+) global$/.exec(text);
+    if (replans) return t('compare.replans', { local: replans[1], global: replans[2] });
+    return text;
+  };
 
-  const select = el('select', { id: 'compare-param', 'aria-label': 'Parameter to change in run B' });
+  const select = el('select', { id: 'compare-param', 'aria-label': t('compare.param.aria') });
   const value = el('input', {
     type: 'text', id: 'compare-value', inputmode: 'decimal', size: 8,
-    'aria-label': 'Value in run B', placeholder: 'value',
+    'aria-label': t('compare.value.aria'), placeholder: t('compare.value.placeholder'),
   });
-  const run = el('button', { type: 'button', id: 'compare-run', class: 'secondary', onclick: () => start() }, 'Compare');
+  const run = el('button', { type: 'button', id: 'compare-run', class: 'secondary', onclick: () => start() }, t('compare.run'));
   const note = el('p', { class: 'panel-message', id: 'compare-message', role: 'status', hidden: true });
   formRoot.append(el('details', { class: 'compare-form', id: 'compare-form' },
-    el('summary', {}, 'Compare with…'),
-    el('p', { class: 'hint' }, 'Run this set-up (A) and the same with one value changed (B) to the end, side by side.'),
+    el('summary', {}, t('compare.summary')),
+    el('p', { class: 'hint' }, t('compare.hint')),
     el('div', { class: 'compare-inputs' }, select, value, run),
     note));
 
-  const canvas = el('canvas', { id: 'compare-canvas', width: WIDTH, height: HEIGHT, 'aria-label': 'Both runs at their end, B as the ghost' });
-  const plot = el('canvas', { id: 'compare-plot', width: WIDTH, height: 160, 'aria-label': 'Speed over time, A and B' });
+  const canvas = el('canvas', { id: 'compare-canvas', width: WIDTH, height: HEIGHT, 'aria-label': t('compare.canvas.aria') });
+  const plot = el('canvas', { id: 'compare-plot', width: WIDTH, height: 160, 'aria-label': t('compare.plot.aria') });
   const table = el('table', { class: 'compare-table', id: 'compare-table' });
-  const title = el('h2', { id: 'compare-title' }, 'Compare');
+  const title = el('h2', { id: 'compare-title' }, t('compare.title'));
   const close = el('button', {
     type: 'button', class: 'link', id: 'compare-close',
     onclick: () => { viewRoot.hidden = true; current?.free(); current = null; },
-  }, 'close');
+  }, t('compare.close'));
   viewRoot.append(
     el('div', { class: 'panel-head' }, title, close),
     el('div', { class: 'compare-body' },
       el('div', { class: 'compare-pictures' }, canvas, plot,
         el('p', { class: 'compare-key' },
-          el('span', { class: 'key-a' }, 'A solid (teal trail)'), ' · ',
-          el('span', { class: 'key-b' }, 'B ghost (violet)'))),
+          el('span', { class: 'key-a' }, t('compare.key.a')), ' · ',
+          el('span', { class: 'key-b' }, t('compare.key.b')))),
       table));
   viewRoot.hidden = true;
 
@@ -57,7 +79,7 @@ export function createCompare(formRoot, viewRoot, app) {
     else select.value = 'LocalPathPlanning/PostureConsiderationLevel';
   }
   select.addEventListener('change', () => {
-    value.placeholder = select.selectedOptions[0]?.dataset.value ?? 'value';
+    value.placeholder = select.selectedOptions[0]?.dataset.value ?? t('compare.value.placeholder');
   });
   formRoot.querySelector('#compare-form').addEventListener('toggle', fillParams);
   app.on('loaded', fillParams);
@@ -71,9 +93,9 @@ export function createCompare(formRoot, viewRoot, app) {
   /** Runs the comparison of the parameter `key` (`Component/Name`) set to `text`. */
   function start(key = select.value, text = value.value) {
     const [component, name] = key.split('/');
-    say('Running both…', 'info');
+    say(t('compare.running'), 'info');
     const r = app.attempt(() => CompareView.run(demo, component, name, text.trim(), WIDTH, HEIGHT));
-    if (!r.ok) return say(`No comparison: ${r.error}`, 'error');
+    if (!r.ok) return say(t('compare.none', { error: r.error }), 'error');
     current?.free();
     current = r.value;
     say('', 'info');
@@ -86,11 +108,11 @@ export function createCompare(formRoot, viewRoot, app) {
     const bytes = new Uint8ClampedArray(app.memory.buffer, view.frame_ptr(), view.frame_len());
     canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(bytes), WIDTH, HEIGHT), 0, 0);
     const data = JSON.parse(view.table_json());
-    title.textContent = `Compare on ${data.scenario.replaceAll('_', ' ')}: B with ${what}`;
+    title.textContent = t('compare.title_on', { scenario: data.scenario.replaceAll('_', ' '), what });
     table.replaceChildren(
-      el('thead', {}, el('tr', {}, el('th', {}, ''), el('th', {}, 'A'), el('th', {}, 'B (ghost)'))),
+      el('thead', {}, el('tr', {}, el('th', {}, ''), el('th', {}, 'A'), el('th', {}, t('compare.col.b')))),
       el('tbody', {}, ...data.rows.map(([m, a, b]) => el('tr', { dataset: { measure: m } },
-        el('th', { scope: 'row' }, m), el('td', {}, a), el('td', {}, b)))),
+        el('th', { scope: 'row' }, ROWS[m] ?? m), el('td', {}, cell(m, a)), el('td', {}, cell(m, b))))),
     );
     drawPlot(JSON.parse(view.plots_json()));
     viewRoot.hidden = false;
@@ -112,7 +134,7 @@ export function createCompare(formRoot, viewRoot, app) {
     ctx.fillStyle = '#334155';
     ctx.font = '11px sans-serif';
     ctx.fillText(`${vMax.toFixed(2)} m/s`, 2, 14);
-    ctx.fillText('speed', 2, h / 2);
+    ctx.fillText(t('compare.plot.speed'), 2, h / 2);
     ctx.fillText(`${tMax.toFixed(1)} s`, w - 40, h - 6);
     for (const [ts, vs, colour] of [[p.t_a, p.v_a, '#0d9488'], [p.t_b, p.v_b, '#7c3aed']]) {
       ctx.strokeStyle = colour;

@@ -10,11 +10,9 @@
 import { Demo } from '../../pkg/rtnav_wasm.js';
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
+import { t, language } from '../i18n.js';
 
 const POLL_MS = 200;
-const MARK_TITLES = {
-  plan: 'plan', failure: 'planning failure', bump: 'bump', fault: 'fault', arrival: 'arrival',
-};
 
 const secs = (ns) => ns / 1e9;
 
@@ -24,6 +22,13 @@ export function createTimeline(root, app) {
   let lastPoll = -Infinity;
   let dragging = false;
   let marksKey = '';
+  const markTitles = {
+    plan: t('timeline.mark.plan'),
+    failure: t('timeline.mark.failure'),
+    bump: t('timeline.mark.bump'),
+    fault: t('timeline.mark.fault'),
+    arrival: t('timeline.mark.arrival'),
+  };
 
   const message = el('span', { class: 'timeline-message', id: 'timeline-message', role: 'status' });
   const say = (text, level = 'info') => {
@@ -32,24 +37,24 @@ export function createTimeline(root, app) {
   };
 
   const play = el('button', {
-    type: 'button', id: 'tl-play', class: 'plain', title: 'Play or pause the clock',
+    type: 'button', id: 'tl-play', class: 'plain', title: t('timeline.play.title'),
     onclick: () => {
       demo.set_paused(!demo.paused());
       refresh(true);
     },
-  }, 'Pause');
+  }, t('timeline.pause'));
   const back = el('button', {
-    type: 'button', id: 'tl-back', class: 'plain', 'aria-label': 'One tick back',
-    title: 'One tick back (re-simulated from the nearest checkpoint)',
+    type: 'button', id: 'tl-back', class: 'plain', 'aria-label': t('timeline.back.aria'),
+    title: t('timeline.back.title'),
     onclick: () => stepBy(-1),
   }, '◀ 1');
   const forth = el('button', {
-    type: 'button', id: 'tl-forth', class: 'plain', 'aria-label': 'One tick forward',
-    title: 'One tick forward', onclick: () => stepBy(1),
+    type: 'button', id: 'tl-forth', class: 'plain', 'aria-label': t('timeline.forth.aria'),
+    title: t('timeline.forth.title'), onclick: () => stepBy(1),
   }, '1 ▶');
   const slider = el('input', {
     type: 'range', id: 'tl-slider', min: 0, max: 1, step: 0.001, value: 0,
-    'aria-label': 'Simulated time', title: 'Drag to any time of the run',
+    'aria-label': t('timeline.slider.aria'), title: t('timeline.slider.title'),
   });
   const marks = el('div', { class: 'timeline-marks', id: 'tl-marks', 'aria-hidden': 'true' });
   const track = el('div', { class: 'timeline-track' }, marks, slider);
@@ -60,20 +65,20 @@ export function createTimeline(root, app) {
   });
   const download = el('button', {
     type: 'button', id: 'replay-download', class: 'secondary',
-    title: 'Download this run as a replay file: its set-up and every request with its time (a teacher can replay it exactly)',
+    title: t('timeline.download.title'),
     onclick: () => {
       const r = app.attempt(() => demo.replay_json());
-      if (!r.ok) return say(`No replay: ${r.error}`, 'error');
+      if (!r.ok) return say(t('timeline.download.none', { error: r.error }), 'error');
       const name = `${app.scenarios?.current ?? 'run'}-${demo.time_s().toFixed(1)}s.rtnav.json`;
       downloadText(r.value, name, 'application/json');
-      say(`Replay saved (${(r.value.length / 1024).toFixed(1)} KB).`, 'success');
+      say(t('timeline.download.saved', { kb: (r.value.length / 1024).toFixed(1) }), 'success');
     },
-  }, 'Download replay');
+  }, t('timeline.download'));
   const load = el('button', {
     type: 'button', id: 'replay-load', class: 'secondary',
-    title: 'Load a replay file (*.rtnav.json) and replay it to its end',
+    title: t('timeline.load.title'),
     onclick: () => fileInput.click(),
-  }, 'Load replay…');
+  }, t('timeline.load'));
   fileInput.addEventListener('change', async () => {
     const file = fileInput.files[0];
     fileInput.value = '';
@@ -94,9 +99,9 @@ export function createTimeline(root, app) {
     refresh(true);
   }
 
-  function seek(t) {
-    const r = app.attempt(() => demo.seek(t));
-    if (!r.ok) say(`Cannot seek: ${r.error}`, 'error');
+  function seek(s) {
+    const r = app.attempt(() => demo.seek(s));
+    if (!r.ok) say(t('timeline.seek_failed', { error: r.error }), 'error');
     jumped();
   }
 
@@ -126,23 +131,24 @@ export function createTimeline(root, app) {
     try {
       name = app.guard.call(() => Demo.replay_scenario(text));
     } catch (e) {
-      return say(`This replay cannot be used: ${e?.message ?? e}`, 'error');
+      return say(t('timeline.replay_refused', { error: e?.message ?? e }), 'error');
     }
-    if (!(await app.scenarios.load(name))) return say(`The scenario ${name} could not be loaded.`, 'error');
+    if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name }), 'error');
     demo.set_paused(true);
     const r = app.attempt(() => JSON.parse(demo.load_replay(text)));
     jumped();
-    if (!r.ok) return say(`This replay cannot be used: ${r.error}`, 'error');
+    if (!r.ok) return say(t('timeline.replay_refused', { error: r.error }), 'error');
     const c = r.value;
     root.dataset.replayHash = c.hash;
     root.dataset.replayMatches = String(c.matches);
-    const where = `${secs(c.end_ns).toFixed(1)} s, ${c.inputs} requests`;
+    const where = t('timeline.where', { s: secs(c.end_ns).toFixed(1), n: c.inputs });
+    const hash = c.hash.slice(0, 12);
     if (c.matches) {
-      say(`Replay loaded (${where}): the same trace as recorded.`, 'success');
-      app.log.page(`Replay of ${name} loaded: ${where}, trace hash ${c.hash.slice(0, 12)}… as recorded. Drag the timeline to go back.`, 'info');
+      say(t('timeline.loaded', { where }), 'success');
+      app.log.page(t('timeline.loaded.log', { name, where, hash }), 'info');
     } else {
-      say(`Replay loaded (${where}), but its trace differs from the recorded one.`, 'error');
-      app.log.page(`Replay of ${name}: trace hash ${c.hash.slice(0, 12)}…, recorded ${c.expected_hash.slice(0, 12)}…`, 'error');
+      say(t('timeline.differs', { where }), 'error');
+      app.log.page(t('timeline.differs.log', { name, hash, expected: c.expected_hash.slice(0, 12) }), 'error');
     }
     return c;
   }
@@ -155,7 +161,8 @@ export function createTimeline(root, app) {
     marks.replaceChildren(...view.marks.map((m) => el('span', {
       class: `timeline-mark mark-${m.kind}`,
       style: `left: ${(100 * (m.t_ns - view.start_ns)) / span}%`,
-      title: `${secs(m.t_ns).toFixed(2)} s · ${MARK_TITLES[m.kind] ?? m.kind}: ${m.text}`,
+      // The core's text of the event is English: shown in English only.
+      title: `${secs(m.t_ns).toFixed(2)} s · ${markTitles[m.kind] ?? m.kind}${language() === 'en' ? `: ${m.text}` : ''}`,
       dataset: { kind: m.kind, t: String(secs(m.t_ns)) },
     })));
   }
@@ -166,7 +173,7 @@ export function createTimeline(root, app) {
     lastPoll = now;
     const r = app.attempt(() => JSON.parse(demo.timeline_json()));
     const paused = demo.paused();
-    setText(play, paused ? 'Play' : 'Pause');
+    setText(play, paused ? t('timeline.play') : t('timeline.pause'));
     play.classList.toggle('active', paused);
     if (!r.ok) {
       root.dataset.enabled = 'false';
