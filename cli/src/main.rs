@@ -11,6 +11,7 @@
 //!     --a LocalPathPlanning.PostureConsiderationLevel=0 \
 //!     --b LocalPathPlanning.PostureConsiderationLevel=85 --png compare.png
 //! rtnav check fixtures/scenarios/ex_door_dmin.json --conf my.conf   # exit 0 pass, 1 fail
+//! rtnav check fixtures/scenarios/ex_fault_recovery.json --replay run.rtnav.json
 //! rtnav system fixtures/scenarios/open_field.json --dot | dot -Tsvg > system.svg
 //! rtnav system fixtures/scenarios/open_field.json --json --until 5
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
@@ -44,8 +45,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rtnav::data::RepoResolver;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
-    BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
-    System, Verdict, check_exercise, setup,
+    BuildOptions, EventKind, FileResolver, OutcomeKind, Replay, Scenario, ScenarioRun, Session,
+    Setup, System, Verdict, check_exercise, setup,
 };
 use rtnav_cli::{alloc, fuzz, soak};
 
@@ -168,6 +169,10 @@ enum Command {
         /// (components or parameters left out keep the scenario's values).
         #[arg(long)]
         conf: Option<PathBuf>,
+        /// The student's run handed in as a replay (`*.rtnav.json`, downloaded from the page):
+        /// its set-up and every request at its time; checked as it was recorded.
+        #[arg(long, conflicts_with = "conf")]
+        replay: Option<PathBuf>,
         /// The folder the scenario's paths are relative to.
         #[arg(long)]
         root: Option<PathBuf>,
@@ -300,9 +305,10 @@ fn main() -> ExitCode {
         Command::Check {
             scenario,
             conf,
+            replay,
             root,
             json,
-        } => check(&scenario, conf.as_deref(), root, json),
+        } => check(&scenario, conf.as_deref(), replay.as_deref(), root, json),
         Command::System {
             scenario,
             dot: _,
@@ -525,19 +531,44 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
 fn check(
     path: &Path,
     conf: Option<&Path>,
+    replay: Option<&Path>,
     root: Option<PathBuf>,
     json: bool,
 ) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
-    let text = match conf {
-        Some(p) => Some(
-            std::fs::read_to_string(p)
-                .map_err(|e| format!("cannot read `{}`: {e}", p.display()))?,
-        ),
-        None => None,
+    let read = |p: &Path| {
+        std::fs::read_to_string(p).map_err(|e| format!("cannot read `{}`: {e}", p.display()))
     };
-    let status =
-        check_exercise(&scenario, &resolver, text.as_deref(), &[]).map_err(|e| e.to_string())?;
+    let status = match replay {
+        Some(file) => {
+            // The run as recorded (the page's Download replay), to its recorded end.
+            let run = Replay::from_json(&read(file)?)
+                .map_err(|e| format!("`{}`: {e}", file.display()))?;
+            if run.setup.scenario != scenario.name {
+                return Err(format!(
+                    "`{}` is a replay of scenario `{}`, not of `{}`",
+                    file.display(),
+                    run.setup.scenario,
+                    scenario.name
+                )
+                .into());
+            }
+            let mut session = Session::new().map_err(|e| e.to_string())?;
+            session
+                .load_scenario(scenario.clone(), &resolver)
+                .map_err(|e| e.to_string())?;
+            session
+                .load_replay(&run)
+                .map_err(|e| format!("`{}`: {e}", file.display()))?;
+            session
+                .exercise()
+                .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?
+        }
+        None => {
+            let text = conf.map(read).transpose()?;
+            check_exercise(&scenario, &resolver, text.as_deref(), &[]).map_err(|e| e.to_string())?
+        }
+    };
     if json {
         println!(
             "{}",

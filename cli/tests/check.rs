@@ -2,10 +2,15 @@
 //! (`fixtures/exercises/NAME.solution.conf`) exits 0, a wrong one (`NAME.wrong.conf`)
 //! exits 1 and says FAILED; a scenario without an exercise is an error (exit 2). Seed 003's
 //! exercise is done with Reset and Activate, not with a configuration: handed in without
-//! them it fails (its solution is checked in `core/tests/exercises.rs`).
+//! them it fails (its solution is checked in `core/tests/exercises.rs`), and handed in as a
+//! replay of the run with them (`--replay`) it passes.
 
 use std::path::PathBuf;
 use std::process::Command;
+
+use rtnav::data::RepoResolver;
+use rtnav::rtc::LifecycleState;
+use rtnav::system::{ComponentKind, Input, Scenario, Session, Verdict};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -80,4 +85,86 @@ fn json_output_and_errors() {
     let (code, text) = check("open_field", None);
     assert_eq!(code, 2, "{text}");
     assert!(text.contains("no exercise"), "{text}");
+}
+
+/// The student's run of seed 003's exercise in the page, downloaded as a replay: Activate
+/// all, the fault at 8 s, then (when `recover`) Reset and Activate on DriveControl.
+fn fault_replay(recover: bool) -> PathBuf {
+    let json =
+        std::fs::read_to_string(root().join("fixtures/scenarios/ex_fault_recovery.json")).unwrap();
+    let mut s = Session::new().unwrap();
+    s.load_scenario(
+        Scenario::from_json(&json).unwrap(),
+        &RepoResolver::new(root()),
+    )
+    .unwrap();
+    s.apply(&Input::ActivateAll).unwrap();
+    let drive = ComponentKind::DriveControl;
+    while s.system().component_state(drive) != LifecycleState::Error {
+        s.step_ticks(100);
+        assert!(s.system().time() < 60.0, "no fault");
+    }
+    if recover {
+        s.apply(&Input::Reset { component: drive }).unwrap();
+        s.apply(&Input::Activate { component: drive }).unwrap();
+    }
+    while matches!(
+        s.exercise().unwrap().verdict,
+        Verdict::Waiting | Verdict::Running
+    ) && s.system().time() < 130.0
+    {
+        s.step_ticks(1_000);
+    }
+    let path = std::env::temp_dir().join(format!(
+        "rtnav-check-{}-{recover}.rtnav.json",
+        std::process::id()
+    ));
+    std::fs::write(&path, s.replay_json().unwrap()).unwrap();
+    path
+}
+
+fn check_replay(replay: &PathBuf) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_rtnav"))
+        .current_dir(root())
+        .args([
+            "check",
+            "fixtures/scenarios/ex_fault_recovery.json",
+            "--replay",
+        ])
+        .arg(replay)
+        .output()
+        .unwrap();
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (out.status.code().unwrap_or(-1), text)
+}
+
+#[test]
+fn the_fault_exercise_handed_in_as_a_replay_is_checked_as_recorded() {
+    let done = fault_replay(true);
+    let (code, text) = check_replay(&done);
+    assert_eq!(code, 0, "recovered:\n{text}");
+    assert!(text.contains("verdict  PASSED"), "{text}");
+    let not_done = fault_replay(false);
+    let (code, text) = check_replay(&not_done);
+    assert_eq!(code, 1, "not recovered:\n{text}");
+    assert!(text.contains("verdict  FAILED"), "{text}");
+    // A replay of another scenario is an error, named.
+    let out = Command::new(env!("CARGO_BIN_EXE_rtnav"))
+        .current_dir(root())
+        .args(["check", "fixtures/scenarios/ex_pd_gains.json", "--replay"])
+        .arg(&done)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&out.stderr)
+            .contains("is a replay of scenario `ex_fault_recovery`")
+    );
+    for f in [done, not_done] {
+        std::fs::remove_file(f).unwrap();
+    }
 }
