@@ -550,8 +550,7 @@ fn check(
                     file.display(),
                     run.setup.scenario,
                     scenario.name
-                )
-                .into());
+                ));
             }
             let mut session = Session::new().map_err(|e| e.to_string())?;
             session
