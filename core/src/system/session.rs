@@ -554,13 +554,9 @@ impl Session {
         Ok(())
     }
 
-    /// Sets a parameter from text, parsed by its declaration (spec §1).
-    pub fn set_param_text(
-        &mut self,
-        component: ComponentKind,
-        name: &str,
-        text: &str,
-    ) -> crate::Result<()> {
+    /// `text` as a value of `component`'s parameter `name`, parsed by its declaration
+    /// (spec §1): named, a number of its type.
+    fn parse_param(&self, component: ComponentKind, name: &str, text: &str) -> crate::Result<f64> {
         let config = self.system.wiring().config(component)?;
         let spec = config
             .specs()
@@ -570,7 +566,17 @@ impl Session {
                 name: name.to_owned(),
                 line: None,
             })?;
-        let value = spec.parse(text, None)?;
+        Ok(spec.parse(text, None)?)
+    }
+
+    /// Sets a parameter from text, parsed by its declaration (spec §1).
+    pub fn set_param_text(
+        &mut self,
+        component: ComponentKind,
+        name: &str,
+        text: &str,
+    ) -> crate::Result<()> {
+        let value = self.parse_param(component, name, text)?;
         self.apply(&Input::SetParam {
             component,
             name: name.to_owned(),

@@ -145,17 +145,7 @@ impl Session {
                 "a comparison needs a scenario; this map was loaded from a file",
             ));
         };
-        // The value is read as a parameter's (named, a number of its type).
-        let config = self.system.wiring().config(component)?;
-        let spec = config
-            .specs()
-            .iter()
-            .find(|s| s.name == name)
-            .ok_or_else(|| crate::errors::ConfigError::UnknownParameter {
-                name: name.to_owned(),
-                line: None,
-            })?;
-        let value = spec.parse(text, None)?;
+        let value = self.parse_param(component, name, text)?;
         let a = self.setup()?;
         let mut b = a.clone();
         b.params
