@@ -20,6 +20,7 @@ mod bench;
 mod dist;
 mod fixtures;
 mod fuzz;
+mod prefetch;
 mod serve;
 mod soak;
 mod test;
@@ -112,6 +113,10 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
                 }
             };
             serve::serve_forever(root, port)?;
+        }
+        // `cargo xtask test`'s background downloads (not for people: see `prefetch.rs`).
+        prefetch::COMMAND => {
+            prefetch::run_steps()?;
         }
         "dist" => {
             let dir = match rest {

@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use crate::Result;
+use crate::prefetch::Prefetch;
 use crate::serve::Background;
 use crate::tools::{self, cargo, cmd, run};
 use crate::{dist, wasm};
@@ -17,48 +18,62 @@ use crate::{dist, wasm};
 struct Stage {
     name: &'static str,
     run: fn() -> Result<Option<String>>,
+    /// Whether it uses what [`Prefetch`] downloads (it waits for it first).
+    needs_downloads: bool,
 }
 
 const STAGES: &[Stage] = &[
     Stage {
         name: "cargo test --workspace",
         run: cargo_test,
+        needs_downloads: false,
     },
     Stage {
         name: "clippy (native, all targets)",
         run: clippy_native,
+        needs_downloads: false,
     },
     Stage {
         name: "clippy (wasm32)",
         run: clippy_wasm,
+        needs_downloads: false,
     },
     Stage {
         name: "rustfmt --check",
         run: fmt_check,
+        needs_downloads: false,
     },
     Stage {
         name: "soak (1 simulated hour, open_field)",
         run: crate::soak::test_stage,
+        needs_downloads: false,
     },
     Stage {
         name: "wasm tests under Node",
         run: wasm_tests,
+        needs_downloads: true,
     },
     Stage {
         name: "the page: wasm build, dist folder",
         run: page,
+        needs_downloads: true,
     },
     Stage {
         name: "browser end-to-end (dist under /rtnav/)",
         run: e2e,
+        needs_downloads: true,
     },
 ];
 
 /// Runs every stage and prints the summary.
 pub fn run_all() -> ExitCode {
     let started = Instant::now();
+    let mut prefetch = Prefetch::start();
     let mut results: Vec<(&str, Duration, Result<Option<String>>)> = Vec::new();
     for (i, stage) in STAGES.iter().enumerate() {
+        if stage.needs_downloads {
+            prefetch.finish();
+        }
         println!("\n==> [{}/{}] {}", i + 1, STAGES.len(), stage.name);
         let t = Instant::now();
         let r = (stage.run)();
@@ -180,10 +195,7 @@ fn e2e() -> Result<Option<String>> {
     tools::ensure_node()?;
     tools::ensure_chromium()?;
     // The lockfile pins playwright-core; it must never download a browser of its own.
-    run(cmd("npm")
-        .args(["ci", "--no-audit", "--no-fund"])
-        .current_dir(e2e_dir())
-        .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))?;
+    crate::prefetch::e2e_packages()?;
     let site = e2e_site();
     if !site.join(E2E_SUB_PATH).join("index.html").is_file() {
         return Err("no dist folder to test: the page stage did not make one".into());

@@ -119,10 +119,10 @@ pub fn ensure_wasm_target() -> Result {
     run(cmd("rustup").args(["target", "add", "wasm32-unknown-unknown"]))
 }
 
-/// `cargo install` of `krate` at exactly `version` unless `binary --version` already says
-/// `version`. `--locked` first; if the registry lacks a version the published lockfile names
+/// `cargo install` of `krate` at exactly `version`, with `options`, unless `binary --version`
+/// already says `version`. `--locked` first; if the registry lacks a version the published lockfile names
 /// (a mirror can), once more without it: the crate's own version stays exact either way.
-fn ensure_cargo_tool(binary: &str, krate: &str, version: &str) -> Result {
+fn ensure_cargo_tool(binary: &str, krate: &str, version: &str, options: &[&str]) -> Result {
     let have = output_of(binary, &["--version"]);
     if have
         .as_deref()
@@ -144,6 +144,10 @@ fn ensure_cargo_tool(binary: &str, krate: &str, version: &str) -> Result {
             &format!("={version}"),
             "--force",
         ]);
+        c.args(options);
+        // Its own temporary build folder (cargo's default for `install`), not the project's:
+        // `cargo xtask test` installs while the test stage builds there.
+        c.env_remove("CARGO_TARGET_DIR");
         if locked {
             c.arg("--locked");
         }
@@ -159,8 +163,23 @@ fn ensure_cargo_tool(binary: &str, krate: &str, version: &str) -> Result {
 }
 
 /// `wasm-bindgen`, `wasm-bindgen-test-runner` etc. at the version pinned in `Cargo.toml`.
+///
+/// Only the two programs xtask runs, and without the crate's default `rustls-tls` feature:
+/// the test runner talks to Node and to local web drivers over plain HTTP, and leaving out
+/// rustls and `ring` (C and assembly) spares a fresh machine a good part of the install.
 pub fn ensure_wasm_bindgen_cli() -> Result {
-    ensure_cargo_tool("wasm-bindgen", "wasm-bindgen-cli", &pinned_wasm_bindgen()?)
+    ensure_cargo_tool(
+        "wasm-bindgen",
+        "wasm-bindgen-cli",
+        &pinned_wasm_bindgen()?,
+        &[
+            "--no-default-features",
+            "--bin",
+            "wasm-bindgen",
+            "--bin",
+            "wasm-bindgen-test-runner",
+        ],
+    )
 }
 
 /// Where cargo builds: `$CARGO_TARGET_DIR`, else `target/` in the repository.
@@ -260,6 +279,22 @@ pub fn ensure_apt(file: &str, packages: &[&str]) -> Result {
 /// Debian's `chromium` and a font for the page's text.
 pub fn ensure_chromium() -> Result {
     ensure_apt(CHROMIUM, &["chromium", "fonts-liberation"])
+}
+
+/// Whether `dir/node_modules` holds exactly the packages of `dir/package-lock.json`: npm's
+/// own record of what it installed (`node_modules/.package-lock.json`) lists the same
+/// packages, at the same versions and integrity, as the lockfile.
+pub fn npm_installed(dir: &Path) -> bool {
+    let packages = |path: PathBuf| -> Option<serde_json::Map<String, serde_json::Value>> {
+        let text = std::fs::read_to_string(path).ok()?;
+        let mut value: serde_json::Value = serde_json::from_str(&text).ok()?;
+        let mut packages = value.get_mut("packages")?.as_object_mut()?.clone();
+        packages.remove(""); // the project itself, in the lockfile only
+        Some(packages)
+    };
+    let wanted = packages(dir.join("package-lock.json"));
+    let installed = packages(dir.join("node_modules").join(".package-lock.json"));
+    wanted.is_some() && wanted == installed
 }
 
 /// Checks that `node` and `npm` are there and Node is new enough.
