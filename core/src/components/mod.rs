@@ -14,7 +14,7 @@ pub use physics_sim::{PhysicsSim, PhysicsSimParams};
 
 pub mod local_path_planning;
 pub use local_path_planning::{
-    LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams, RETRY_NS,
+    FIELD_CELLS_PER_EXECUTION, LocalPathFlags, LocalPathPlanning, LocalPathPlanningParams, RETRY_NS,
 };
 
 mod global_path_planning;

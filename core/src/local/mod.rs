@@ -23,13 +23,13 @@ pub mod reference;
 
 pub use checks::{clear_cell, course_cells};
 pub use control_points::{control_points, corner_cells, thin_collinear};
-pub use escape::plan_escaping;
+pub use escape::{EscapeLead, plan_escaping};
 pub use local_path::descend;
 pub use local_target::{
     LocalTarget, find_local_target, nearest_path_index, step_length, wrap_angle,
 };
 pub use merge::merge_paths;
-pub use planner::{LocalPlan, LocalPlanner, PlanParams, PlanRequest};
+pub use planner::{LocalPlan, LocalPlanner, PlanParams, PlanRequest, Progress};
 pub use potential_field::{
     CellInfo, CellState, FieldCell, FieldExtent, FieldRequest, NEIGHBOURS, PotentialField,
     TARGET_POTENTIAL,

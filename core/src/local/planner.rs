@@ -76,11 +76,32 @@ pub struct LocalPlan {
     pub control_points: Vec<(f64, f64)>,
 }
 
+/// Where a plan stands after [`LocalPlanner::begin`] or [`LocalPlanner::resume`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Progress {
+    /// The plan is made.
+    Done(LocalPlan),
+    /// Its field is unfinished: [`LocalPlanner::resume`] goes on.
+    Continuing,
+}
+
+/// A plan begun whose field is unfinished: what the rest of it is made from.
+#[derive(Debug, Clone, PartialEq)]
+struct Pending {
+    target: LocalTarget,
+    current_cell: Cell,
+    current: Pose,
+    goal: Pose,
+    posture: bool,
+    direction: Direction,
+}
+
 /// The local planner: owns the potential field's buffers.
 #[derive(Debug, Clone, Default)]
 pub struct LocalPlanner {
     field: PotentialField,
     field_fresh: bool,
+    pending: Option<Pending>,
 }
 
 impl LocalPlanner {
@@ -110,6 +131,39 @@ impl LocalPlanner {
         map: &GridMap,
         request: &PlanRequest<'_>,
     ) -> Result<LocalPlan, LocalPathError> {
+        let mut progress = self.begin(map, request, usize::MAX)?;
+        loop {
+            match progress {
+                Progress::Done(plan) => return Ok(plan),
+                // Not with an unbounded budget; went on all the same.
+                Progress::Continuing => {
+                    progress = self.resume(map, request.held_path, usize::MAX)?;
+                }
+            }
+        }
+    }
+
+    /// Whether a plan is begun and unfinished.
+    pub fn is_pending(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// Drops an unfinished plan (the field keeps what it computed, for display).
+    pub fn cancel(&mut self) {
+        self.pending = None;
+    }
+
+    /// [`LocalPlanner::plan`], its field finalizing at most `budget` cells now (spec §3
+    /// Decision 0.2, "A local plan over executions"). [`Progress::Continuing`]: the rest
+    /// comes from [`LocalPlanner::resume`], with the same held path; the plan is then the
+    /// one `plan` would have made now. Errors as `plan`'s, the unfinished plan dropped.
+    pub fn begin(
+        &mut self,
+        map: &GridMap,
+        request: &PlanRequest<'_>,
+        budget: usize,
+    ) -> Result<Progress, LocalPathError> {
+        self.pending = None;
         self.field_fresh = false;
         let p = request.params;
         for (name, value) in [
@@ -174,27 +228,69 @@ impl LocalPlanner {
             posture,
             extent: request.extent,
         };
-        let computed = self.field.compute(map, &field_request);
+        let computed = self.field.compute_within(map, &field_request, budget);
         self.field_fresh = !matches!(
             computed,
             Err(LocalPathError::CellOutside { .. }
                 | LocalPathError::BadParameter { .. }
                 | LocalPathError::NotFinite { .. })
         );
-        computed?;
-        let local_path = descend(&self.field, current_cell)?;
-        let merged_path = merge_paths(
-            &local_path,
-            request.held_path,
-            target.index,
-            target.goal_index,
-        );
-        let control_points = control_points(map, &merged_path, (cur.x, cur.y), (goal.x, goal.y));
-        Ok(LocalPlan {
+        let pending = Pending {
             target,
             current_cell,
+            current: cur,
+            goal,
             posture,
             direction: request.direction,
+        };
+        if !computed? {
+            self.pending = Some(pending);
+            return Ok(Progress::Continuing);
+        }
+        self.finish(map, request.held_path, pending)
+            .map(Progress::Done)
+    }
+
+    /// Goes on with the plan [`LocalPlanner::begin`] left unfinished, for at most `budget`
+    /// more field cells. `held_path` is the path the plan was begun with. With no plan
+    /// pending: [`Progress::Continuing`] (nothing to make). Errors as `plan`'s (no route),
+    /// the plan dropped.
+    pub fn resume(
+        &mut self,
+        map: &GridMap,
+        held_path: &[Cell],
+        budget: usize,
+    ) -> Result<Progress, LocalPathError> {
+        let Some(pending) = self.pending.take() else {
+            return Ok(Progress::Continuing);
+        };
+        if !self.field.resume(map, budget)? {
+            self.pending = Some(pending);
+            return Ok(Progress::Continuing);
+        }
+        self.finish(map, held_path, pending).map(Progress::Done)
+    }
+
+    /// Steps 5–7 on the finished field: descent, merge, control points.
+    fn finish(
+        &self,
+        map: &GridMap,
+        held_path: &[Cell],
+        p: Pending,
+    ) -> Result<LocalPlan, LocalPathError> {
+        let local_path = descend(&self.field, p.current_cell)?;
+        let merged_path = merge_paths(&local_path, held_path, p.target.index, p.target.goal_index);
+        let control_points = control_points(
+            map,
+            &merged_path,
+            (p.current.x, p.current.y),
+            (p.goal.x, p.goal.y),
+        );
+        Ok(LocalPlan {
+            target: p.target,
+            current_cell: p.current_cell,
+            posture: p.posture,
+            direction: p.direction,
             local_path,
             merged_path,
             control_points,

@@ -215,6 +215,8 @@ pub struct PotentialField {
     request: Option<FieldRequest>,
     /// What the impassable marks and `d2` were made from: the map's stamp and `dmin`.
     marks: Option<(MapStamp, u64)>,
+    /// The map's stamp while a computation is unfinished ([`PotentialField::resume`]).
+    growing: Option<MapStamp>,
     complete: bool,
     current_reached: bool,
 }
@@ -308,6 +310,19 @@ impl PotentialField {
     /// ([`LocalPathError::TargetBlocked`]) or the current cell never reached
     /// ([`LocalPathError::NoRoute`]) — then the field holds what was computed, for display.
     pub fn compute(&mut self, map: &GridMap, request: &FieldRequest) -> Result<(), LocalPathError> {
+        self.compute_within(map, request, usize::MAX).map(drop)
+    }
+
+    /// [`PotentialField::compute`], finalizing at most `budget` cells now (spec §3 Decision
+    /// 0.2, "A local plan over executions"): `Ok(true)` when the field is done — then the same
+    /// field and result as `compute` —, `Ok(false)` when [`PotentialField::resume`] goes on
+    /// from where this stopped. The cells are finalized in the same order either way.
+    pub fn compute_within(
+        &mut self,
+        map: &GridMap,
+        request: &FieldRequest,
+        budget: usize,
+    ) -> Result<bool, LocalPathError> {
         validate(map, request)?;
         self.reset(map, request);
         let target = map.index(request.target);
@@ -316,15 +331,50 @@ impl PotentialField {
                 from: request.target,
             });
         }
-        self.grow(map, request);
+        self.cells[target].potential = TARGET_POTENTIAL;
+        self.words[target] = (self.words[target] & !(STATE_MASK | PARENT_MASK)) | REACHED;
+        self.touched.push(target as u32);
+        self.queue
+            .push(Entry::new(TARGET_POTENTIAL.to_bits(), 0.0, target as u32));
+        self.growing = Some(map.stamp());
+        self.resume(map, budget)
+    }
+
+    /// Goes on with an unfinished [`PotentialField::compute_within`] for at most `budget`
+    /// more finalized cells: `Ok(true)` when done, with `compute`'s result. On a map that
+    /// changed since it began, the computation begins again on this map. With nothing
+    /// unfinished, the result of the last computation again.
+    pub fn resume(&mut self, map: &GridMap, budget: usize) -> Result<bool, LocalPathError> {
+        let Some(request) = self.request else {
+            return Ok(true);
+        };
+        match self.growing {
+            Some(stamp) if stamp != map.stamp() => {
+                return self.compute_within(map, &request, budget);
+            }
+            Some(_) => {
+                self.ranks = OnceCell::new();
+                self.codes = OnceCell::new();
+                if !self.grow(map, &request, budget) {
+                    return Ok(false);
+                }
+                self.growing = None;
+            }
+            None => {}
+        }
         if self.current_reached {
-            Ok(())
+            Ok(true)
         } else {
             Err(LocalPathError::NoRoute {
                 target: request.target,
                 current: request.current,
             })
         }
+    }
+
+    /// Whether a computation is unfinished ([`PotentialField::compute_within`]).
+    pub fn is_growing(&self) -> bool {
+        self.growing.is_some()
     }
 
     /// Clears what the last computation reached and brings the impassable marks and
@@ -378,27 +428,23 @@ impl PotentialField {
         }
         self.marks = Some(key);
         self.request = Some(*request);
+        self.growing = None;
         self.complete = false;
         self.current_reached = false;
     }
 
-    /// Dijkstra growth from the target (000 §5.2.4.9, spec §3 step 4).
-    fn grow(&mut self, map: &GridMap, req: &FieldRequest) {
+    /// Dijkstra growth from the target (000 §5.2.4.9, spec §3 step 4), at most `budget`
+    /// cells finalized: whether it ended (the current cell finalized, for
+    /// [`FieldExtent::UntilCurrent`], or the queue empty).
+    fn grow(&mut self, map: &GridMap, req: &FieldRequest, budget: usize) -> bool {
         let (w, h) = (self.width, self.height);
         let dist = map.distances();
         let dmin = req.dmin;
         let t = Terms::new(map.grid_size(), req);
         let current = map.index(req.current);
-        let target = map.index(req.target);
         let until_current = req.extent == FieldExtent::UntilCurrent;
         let offsets: [isize; 8] = NEIGHBOURS.map(|(dx, dy)| dx as isize + dy as isize * w as isize);
         let steps = [t.step_straight, t.step_diagonal];
-
-        self.cells[target].potential = TARGET_POTENTIAL;
-        self.words[target] = (self.words[target] & !(STATE_MASK | PARENT_MASK)) | REACHED;
-        self.touched.push(target as u32);
-        self.queue
-            .push(Entry::new(TARGET_POTENTIAL.to_bits(), 0.0, target as u32));
         let cells = &mut self.cells[..];
         let words = &mut self.words[..];
         let repulsion = &self.repulsion;
@@ -406,14 +452,19 @@ impl PotentialField {
         let order = &mut self.order;
         let queue = &mut self.queue;
 
-        while let Some(entry) = queue.pop() {
+        let mut left = budget;
+        while left > 0
+            && let Some(entry) = queue.pop()
+        {
+            left -= 1;
             let (key, lp, cell) = (entry.key, entry.length, entry.cell);
             let i = cell as usize;
             order.push(cell);
             if i == current {
                 self.current_reached = true;
                 if until_current {
-                    break;
+                    self.complete = queue.is_empty();
+                    return true;
                 }
             }
             let gp = f64::from_bits(key);
@@ -461,7 +512,8 @@ impl PotentialField {
                 queue.push(Entry::new(gn.to_bits(), l, ni as u32));
             }
         }
-        self.complete = self.queue.is_empty();
+        self.complete = queue.is_empty();
+        self.complete
     }
 
     /// Cells in x.

@@ -52,15 +52,18 @@
 //! keeps it (a later `MapUpdate` may clear the way).
 
 mod params;
+mod planning;
 pub use params::{LocalPathFlags, LocalPathPlanningParams};
+pub use planning::FIELD_CELLS_PER_EXECUTION;
+use planning::Unfinished;
 
 use crate::errors::LocalPathError;
 use crate::interfaces::{
     ControlPoints, Direction, GlobalPathCourse, GridPath, PlanningFailure, Pose,
 };
 use crate::local::{
-    FieldExtent, LocalPlan, LocalPlanner, LocalTarget, PlanParams, PlanRequest, PotentialField,
-    clear_cell, control_points, course_cells, nearest_path_index, plan_escaping,
+    FieldExtent, LocalPlan, LocalPlanner, LocalTarget, PlanParams, PotentialField, clear_cell,
+    control_points, course_cells, nearest_path_index,
 };
 use crate::map::{Cell, GridMap, MapUpdate};
 use crate::rtc::{
@@ -125,6 +128,8 @@ pub struct LocalPathPlanning {
     planned_with: Option<PlanParams>,
     /// Steps of the last plan that lead out of the `dmin` zone.
     escaped: usize,
+    /// A plan begun and not finished (its field grows over executions).
+    unfinished: Option<Unfinished>,
 }
 
 const PLANNER: &str = "LocalPathPlanning";
@@ -171,6 +176,7 @@ impl LocalPathPlanning {
             retry_at_ns: None,
             planned_with: None,
             escaped: 0,
+            unfinished: None,
         }
     }
 
@@ -237,6 +243,7 @@ impl LocalPathPlanning {
         self.flags.replan_request = false;
         self.flags.safe_mode = false;
         self.retry_at_ns = None;
+        self.drop_unfinished();
         // The field and local plan drawn were for the old start/goal.
         self.field_valid = false;
         self.plan = None;
@@ -267,6 +274,7 @@ impl LocalPathPlanning {
         self.last_failure = None;
         self.retry_at_ns = None;
         self.planned_with = None;
+        self.drop_unfinished();
     }
 
     /// `SafeMode` (000 §3.2.2.1 (3), T.B.D. in the seed). **Decision (spec §3)**: halt — the
@@ -278,6 +286,7 @@ impl LocalPathPlanning {
         self.send_global = false;
         self.send_empty = true;
         self.retry_at_ns = None;
+        self.drop_unfinished();
     }
 
     /// `SetMap` (000 §3.2.2.1 (4), §5.2.4.1, spec §2): `map_data[x + y · map_length_x]`, 0
@@ -313,6 +322,11 @@ impl LocalPathPlanning {
         self.field_valid = false;
         self.plan = None;
         self.refresh_current_flag();
+        // A plan begun on the old map is made again on this one (if one can be).
+        if self.unfinished.is_some() {
+            self.drop_unfinished();
+            self.raise_replan_request();
+        }
     }
 
     /// `MapUpdate` (000 §3.2.2.1 (5), §5.2.4.6, spec §2): sets the listed cells, atomically;
@@ -326,6 +340,8 @@ impl LocalPathPlanning {
             .ok_or(LocalPathError::NoMap { call: "MapUpdate" })?;
         let changed = map.map_update(update)?;
         if changed > 0 {
+            // A plan begun on the map before is made again on this one.
+            self.drop_unfinished();
             self.refresh_current_flag();
             self.raise_replan_request();
         }
@@ -349,6 +365,7 @@ impl LocalPathPlanning {
         self.held_path = cells;
         self.match_index = 0;
         self.flags.path = true;
+        self.drop_unfinished();
         self.field_valid = false;
         self.plan = None;
         // Spec §3 Decision 0.2: the next tick makes the potential-field plan from the current
@@ -504,13 +521,26 @@ impl LocalPathPlanning {
                 .planned_with
                 .is_some_and(|p| p != plan_params(self.config.params()));
         let waiting = (self.flags.replan_request && self.can_replan())
+            || self.unfinished.is_some()
             || self.send_global
             || self.send_empty
             || params_changed;
         !waiting
     }
 
+    /// Whether a plan is being made over executions (spec §3 Decision 0.2): its field is
+    /// unfinished, and what was last sent stays until it is done.
+    pub fn is_planning(&self) -> bool {
+        self.unfinished.is_some()
+    }
+
     // ----- internals -----
+
+    /// Drops a plan begun and not finished (a new goal, map or path, Clear, SafeMode).
+    fn drop_unfinished(&mut self) {
+        self.unfinished = None;
+        self.planner.cancel();
+    }
 
     fn can_replan(&self) -> bool {
         let f = &self.flags;
@@ -593,46 +623,6 @@ impl LocalPathPlanning {
         let points = control_points(map, &cells, (cur.x, cur.y), (goal.x, goal.y));
         self.match_index = m;
         self.send(tick, cells, points);
-    }
-
-    /// Spec §3 steps 3–8, after escaping the `dmin` zone if the robot stands in it.
-    fn replan(&mut self, tick: &Tick, params: &LocalPathPlanningParams) {
-        let (Some(map), Some(goal), Some(current)) = (self.map.as_ref(), self.goal, self.current)
-        else {
-            return;
-        };
-        let plan_params = plan_params(params);
-        self.planned_with = Some(plan_params);
-        self.plan_count += 1;
-        let request = PlanRequest {
-            held_path: &self.held_path,
-            match_from: self.match_index,
-            current,
-            goal,
-            direction: self.direction,
-            params: plan_params,
-            extent: self.extent,
-        };
-        // Spec §3 Decision 0.2: from inside the dmin zone, the plan escapes first.
-        let result = plan_escaping(&mut self.planner, map, &request);
-        self.field_valid = self.planner.field_is_fresh();
-        match result {
-            Ok((plan, escaped)) => {
-                self.escaped = escaped;
-                self.retry_at_ns = None;
-                self.held_path = plan.merged_path.clone();
-                self.match_index = 0;
-                self.send(tick, plan.merged_path.clone(), plan.control_points.clone());
-                self.plan = Some(plan);
-            }
-            Err(e) => {
-                self.escaped = 0;
-                self.plan = None;
-                // Spec §3 Decision 0.2: try again in 1 s while the goal is held.
-                self.retry_at_ns = Some(tick.time_ns.saturating_add(RETRY_NS));
-                self.fail(tick, e);
-            }
-        }
     }
 
     /// 000 §5.2.4.13: empty path and control points (if that is a change) and the notice.
@@ -730,6 +720,7 @@ impl Component for LocalPathPlanning {
     /// reset (arrived, what was last sent, a pending retry), with a replan requested, so the
     /// first tick after activation plans and sends afresh.
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {
+        self.drop_unfinished();
         self.in_current_position.clear();
         self.in_deviating.clear();
         self.sent = None;
@@ -777,6 +768,15 @@ impl Component for LocalPathPlanning {
         }
         if self.planned_with.is_some_and(|p| p != plan_params(&params)) {
             self.raise_replan_request();
+        }
+        // Spec §3 Decision 0.2: a plan over executions goes on (a request made meanwhile is
+        // served after it), unless it can no longer be made or its parameters changed.
+        if self.unfinished.is_some() {
+            if self.can_replan() && self.planned_with == Some(plan_params(&params)) {
+                self.go_on(tick);
+                return Ok(());
+            }
+            self.drop_unfinished();
         }
         // Steps 3–8: a local plan, if requested (000 §5.2.4.8–13); else the new global
         // path as it is (000 §5.2.4.3).
