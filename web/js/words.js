@@ -82,16 +82,17 @@ export function errorText(e) {
 }
 
 /**
- * The English templates of the errors (`error.*` in en.json) as patterns: a reason that
- * reaches the page only as the core's text (inside an event: a planning failure's, a
- * callback's) is read back into its fields by the template it was written from.
+ * The English templates of the errors and reasons (`error.<Area>.<Kind>`, `reason.*` in
+ * en.json) as patterns: a reason that reaches the page only as the core's text (inside an
+ * event — a planning failure's, a callback's — or a component's last error) is read back
+ * into its fields by the template it was written from, and said by the same key.
  */
 let templates = null;
 function errorTemplates() {
   if (templates) return templates;
   templates = [];
   for (const [key, text] of Object.entries(englishWords())) {
-    if (!/^error\.\w+\.[A-Z]\w*$/.test(key)) continue;
+    if (!/^(error\.\w+\.[A-Z]\w*|reason\.\w+)$/.test(key)) continue;
     const names = [];
     const source = text.split(/(\{[\w.]+(?::[\w.]+)?\})/).map((part) => {
       const m = /^\{([\w.]+)(?::[\w.]+)?\}$/.exec(part);
@@ -106,20 +107,10 @@ function errorTemplates() {
   return templates;
 }
 
-/** The page's words for the core's reasons that are not errors. */
-const REASONS = [
-  [/^injected fault: (.*)$/, 'reason.injected_fault'],
-  [/^GlobalPathCourse refused: (.*)$/, 'reason.course_refused'],
-];
-
 /** `text`, a reason the core gave as text, in the page's language (as given when not known). */
 export function reasonText(text) {
   if (language() === 'en' || typeof text !== 'string') return text;
   if (has(`word.${text}`)) return t(`word.${text}`);
-  for (const [pattern, key] of REASONS) {
-    const m = pattern.exec(text);
-    if (m) return t(key, { reason: reasonText(m[1]) });
-  }
   for (const { key, names, pattern } of errorTemplates()) {
     const m = pattern.exec(text);
     if (!m) continue;
@@ -129,7 +120,7 @@ export function reasonText(text) {
       const path = name.split('.');
       let into = vars;
       for (const p of path.slice(0, -1)) into = into[p] ??= {};
-      into[path.at(-1)] = has(`word.${v}`) ? t(`word.${v}`) : v;
+      into[path.at(-1)] = has(`word.${v}`) ? t(`word.${v}`) : /[a-z]{3}/.test(v) ? reasonText(v) : v;
     });
     if (typeof vars.request === 'string') {
       const r = Object.keys(englishWords()).find((k) => k.startsWith('request.') && englishWords()[k] === vars.request);
