@@ -49,9 +49,12 @@ function errorVars(d) {
     if (v === null && !OPTIONAL.has(k)) vars[k] = 'NaN';
     else if (typeof v === 'string' && has(`word.${v}`)) vars[k] = t(`word.${v}`);
     else if (v && typeof v === 'object' && !Array.isArray(v) && 'kind' in v) vars[k] = detailText(v) ?? '';
+    // A reason given as text (a file's parse problem, a callback's): read back if it can be.
+    else if (typeof v === 'string' && /[a-z]{3}/.test(v)) vars[k] = reasonText(v);
     else vars[k] = v;
   }
   if (typeof fields.request === 'string') vars.request = t(`request.${fields.request}`);
+  if (typeof fields.type === 'string' && has(`params.type.${fields.type}`)) vars.type = t(`params.type.${fields.type}`);
   if ('line' in fields) vars.at_line = fields.line === null ? '' : t('error.at_line', { line: fields.line });
   if ('index' in fields) vars.at_index = fields.index === null ? '' : t('error.at_index', { index: fields.index });
   if (typeof fields.index === 'number') vars.previous = fields.index - 1;

@@ -14,7 +14,7 @@
 // (`data-value`, `data-effective`, `data-pending`) for the end-to-end tests.
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
-import { t, language } from '../i18n.js';
+import { t, has, language } from '../i18n.js';
 import { reasonText } from '../words.js';
 
 const POLL_MS = 500;
@@ -122,18 +122,20 @@ export function createParamsPanel(root, app) {
     const error = el('div', { class: 'param-error', role: 'alert', hidden: true });
     const warning = el('div', { class: 'param-warning', role: 'status', hidden: true });
     const about = NOTES[`${c.component}/${p.name}`];
+    // The description in the page's language: the seed's own Japanese, else the catalogue's.
+    const described = language() === 'ja' ? (p.seed_text ?? t(`param.${c.component}.${p.name}`)) : p.description;
     const node = el('div', { class: 'param', dataset: { component: c.component, name: p.name, reflection: p.reflection } },
-      el('label', { class: 'param-name', for: id, title: p.description }, p.name),
+      el('label', { class: 'param-name', for: id, title: described }, p.name),
       input,
       el('span', { class: 'param-unit' }, unitText(p.unit)),
       el('div', { class: 'param-desc', id: `${id}-desc` },
         language() === 'ja'
-          ? el('span', { class: 'param-ja', lang: 'ja' }, p.seed_text ?? t(`param.${c.component}.${p.name}`))
+          ? el('span', { class: 'param-ja', lang: 'ja' }, described)
           : el('span', { class: 'param-en' }, p.description),
         p.seed_text && language() !== 'ja' ? el('span', { class: 'param-ja', lang: 'ja', title: t('params.seed_words') }, p.seed_text) : null,
         about ? el('span', { class: 'param-note' }, about) : null),
       el('div', { class: 'param-meta', id: `${id}-meta` },
-        el('span', { class: 'param-range', title: p.type === 'int' ? t('params.int') : t('params.real') }, `${p.type} ${p.range}`),
+        el('span', { class: 'param-range', title: p.type === 'int' ? t('params.int') : t('params.real') }, `${has(`params.type.${p.type}`) ? t(`params.type.${p.type}`) : p.type} ${p.range}`),
         el('span', { class: 'param-reflection', title: reflectTitle }, reflectText),
         pendingTag),
       warning,
