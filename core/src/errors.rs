@@ -161,15 +161,28 @@ mod tests {
             request: Request::Deactivate,
         });
         let d = e.detail();
-        assert_eq!((d.area, d.kind.as_str()), ("Lifecycle", "InvalidTransition"));
+        assert_eq!(
+            (d.area, d.kind.as_str()),
+            ("Lifecycle", "InvalidTransition")
+        );
         assert_eq!(
             d.fields,
             serde_json::json!({"component": "DriveControl", "from": "Inactive", "request": "Deactivate"})
         );
-        let t = Error::from(TimestampError { what: "MapUpdate", sec: 1, nsec: 1_000_000_000 });
-        assert_eq!((t.detail().area, t.detail().kind.as_str()), ("Timestamp", "Invalid"));
+        let t = Error::from(TimestampError {
+            what: "MapUpdate",
+            sec: 1,
+            nsec: 1_000_000_000,
+        });
+        assert_eq!(
+            (t.detail().area, t.detail().kind.as_str()),
+            ("Timestamp", "Invalid")
+        );
         let n = Error::from(GlobalPlanningError::NoMap).detail();
-        assert_eq!((n.kind.as_str(), n.fields.clone()), ("NoMap", serde_json::json!({})));
+        assert_eq!(
+            (n.kind.as_str(), n.fields.clone()),
+            ("NoMap", serde_json::json!({}))
+        );
         for d in [d, n] {
             let (_, kinds) = Error::KINDS.iter().find(|(a, _)| *a == d.area).unwrap();
             assert!(kinds.contains(&d.kind.as_str()), "{d:?}");
@@ -182,7 +195,10 @@ mod tests {
         let e = Error::from(ConfBundleError::ConfBlock {
             component: "DriveControl".into(),
             line: 4,
-            problem: ConfigError::UnknownParameter { name: "x".into(), line: Some(2) },
+            problem: ConfigError::UnknownParameter {
+                name: "x".into(),
+                line: Some(2),
+            },
         });
         assert_eq!(
             e.detail().fields["problem"],

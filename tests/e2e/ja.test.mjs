@@ -293,6 +293,11 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await screenshot(page, `page-ja-log-${width}x${height}.png`, { fullPage: width < 1000 });
     await showTab(page, 'system');
     await page.click('#system-diagram .sys-box[data-component="DriveControl"] .sys-title');
+    // The tab from its top: its title, legend and hint, the selected box's actions.
+    await page.evaluate(() => {
+      for (let e = document.getElementById('system-panel'); e; e = e.parentElement) e.scrollTop = 0;
+      if (window.innerWidth >= 1000) window.scrollTo(0, 0);
+    });
     await frames(page, 3);
     await screenshot(page, `page-ja-system-${width}x${height}.png`, { fullPage: width < 1000 });
     console.log(JSON.stringify(seen, null, 1));

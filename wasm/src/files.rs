@@ -49,7 +49,6 @@ enum Kind {
     MovingAi,
 }
 
-
 /// The loader for a file: by its extension, else by its first characters.
 fn kind(name: &str, bytes: &[u8]) -> Option<Kind> {
     let lower = name.to_ascii_lowercase();
@@ -117,11 +116,10 @@ impl Files {
         if let Some(&(name, bytes, _)) = kinds.iter().find(|k| k.2 == Some(Kind::RosYaml)) {
             // Checked here for a clearer message than "cannot read": the image must have
             // been picked too.
-            let text =
-                std::str::from_utf8(bytes).map_err(|e| PageError::NotText {
-                    name: name.to_owned(),
-                    reason: msg(e).message,
-                })?;
+            let text = std::str::from_utf8(bytes).map_err(|e| PageError::NotText {
+                name: name.to_owned(),
+                reason: msg(e).message,
+            })?;
             let yaml = ros::parse_yaml(text).map_err(|e| refused(e).about("file", name))?;
             if !self.0.contains_key(&yaml.image) {
                 return Err(PageError::MissingImage {

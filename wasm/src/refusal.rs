@@ -11,7 +11,15 @@ pub(crate) const EXPECTED: &str = "expected an rtnav JSON map (.json), a ROS map
 
 /// A request of this layer's own that is refused (area `Page` in the detail): the files a
 /// user picked, the page's arrays and layer names. `PageError::VARIANTS` lists every kind.
-#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames, strum::IntoStaticStr)]
+#[derive(
+    Debug,
+    Clone,
+    PartialEq,
+    thiserror::Error,
+    serde::Serialize,
+    strum::VariantNames,
+    strum::IntoStaticStr,
+)]
 #[serde(tag = "kind")]
 pub(crate) enum PageError {
     /// No file picked.
@@ -182,7 +190,11 @@ mod tests {
         for (area, kinds) in rtnav::Error::KINDS {
             keys.extend(kinds.iter().map(|k| format!("error.{area}.{k}")));
         }
-        keys.extend(PageError::VARIANTS.iter().map(|k| format!("error.Page.{k}")));
+        keys.extend(
+            PageError::VARIANTS
+                .iter()
+                .map(|k| format!("error.Page.{k}")),
+        );
         keys
     }
 
@@ -199,7 +211,11 @@ mod tests {
         assert!(wanted().contains(&"event.Bump".to_owned()));
         assert!(wanted().contains(&"error.Lifecycle.InvalidTransition".to_owned()));
         for lang in ["en", "ja"] {
-            assert_eq!(lacking(&catalogue(lang)), Vec::<String>::new(), "{lang}.json");
+            assert_eq!(
+                lacking(&catalogue(lang)),
+                Vec::<String>::new(),
+                "{lang}.json"
+            );
         }
         // The check can fail: a catalogue without one kind's words is found out.
         let mut less = catalogue("ja");
