@@ -260,6 +260,10 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.click('#activate-all');
     await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
     await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.3, null, WAIT);
+    // Paused while the obstacle is painted on the robot (a slow machine must not let it drive
+    // off first); the next tick touches it.
+    await page.click('#pause');
+    await page.waitForFunction(() => window.rtnav.demo.paused(), null, WAIT);
     const t = await telemetry(page);
     const m = await mapInfo(page);
     const at = [Math.floor((t.pose.x - m.origin[0]) / m.grid_size), Math.floor((t.pose.y - m.origin[1]) / m.grid_size)];
@@ -269,6 +273,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     const [px, py] = await cellToPage(page, at);
     await page.mouse.click(px, py);
     await page.click('#tool-pan');
+    await page.click('#pause');
     seen.bump = await waitLogged(page, 'Bump');
     assert.match(seen.bump, /衝突/, seen.bump);
     await showTab(page, 'rtc');
