@@ -123,6 +123,29 @@ async function waitLogged(page, kind, timeout = 60_000) {
 /** The log's entries: [kind, text]. */
 const logLines = (page) => page.$$eval('#events li', (items) => items.map((i) => [i.dataset.kind, i.querySelector('.text').textContent]));
 
+/**
+ * The core's events in the log said again through the English catalogue (the reasons as
+ * given): [kind, the core's text, the catalogue's], for those that differ. The catalogue's
+ * English must be the core's, so its Japanese carries the same numbers written the same way.
+ */
+const englishMismatches = (page) => page.evaluate(async () => {
+  const { eventWords } = await import('./js/words.js');
+  const { fill, englishWords } = await import('./js/i18n.js');
+  const say = (key, vars) => fill(englishWords()[key] ?? key, vars);
+  const out = [];
+  let compared = 0;
+  for (const li of document.querySelectorAll('#events li')) {
+    const e = li.rtnavEvent;
+    if (!e || e.kind === 'Page') continue;
+    compared++;
+    const again = eventWords(e, say, (r) => r);
+    if (again !== e.text) out.push([e.kind, e.text, again]);
+  }
+  // Nothing compared is a broken check, not a pass.
+  if (compared < 3) out.push(['none', `only ${compared} events compared`, '']);
+  return out;
+});
+
 /** A goal dropped inside an obstacle, through the goal tool: refused. */
 async function refusedGoal(page) {
   const cell = await page.evaluate(() => {
@@ -215,6 +238,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     assert.match(seen.planning, /経路計画に失敗/, seen.planning);
     await checkAllTabs(page, names, `${width}×${height}, unreachable`);
     const planningLines = await logLines(page);
+    assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
 
     // The exercise with a fault injected mid-drive, and everything else on the way.
     await pick(page, 'ex_fault_recovery');
@@ -239,6 +263,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.waitForSelector('#exercise .exercise-verdict:is([data-verdict="passed"], [data-verdict="failed"])', { timeout: 60_000 });
     await checkAllTabs(page, names, `${width}×${height}, arrived`);
     const lines = [...planningLines, ...await logLines(page)];
+    assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
 
     // The compare view (at the width that shows it beside the page).
     if (width >= 1000) {
@@ -281,6 +306,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.waitForSelector('#components li[data-component="LocalPathPlanning"][data-state="Error"]', WAIT);
     await checkAllTabs(page, names, `${width}×${height}, a bump`);
     lines.push(...await logLines(page));
+    assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
 
     // Every kind that happened is said in Japanese in the log (no line as the core wrote it).
     await showTab(page, 'log');

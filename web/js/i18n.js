@@ -89,7 +89,11 @@ function at(vars, path) {
  * `{theta:deg.1}`, see `show`). A placeholder without a value stays as written.
  */
 export function t(key, vars = {}) {
-  const text = words[key] ?? english[key] ?? key;
+  return fill(words[key] ?? english[key] ?? key, vars);
+}
+
+/** `text` with its placeholders filled from `vars` (see `t`). */
+export function fill(text, vars = {}) {
   return text.replace(/\{([\w.]+)(?::([\w.]+))?\}/g, (m, path, fmt) => {
     const v = at(vars, path);
     return v === undefined ? m : show(v, fmt);
