@@ -152,9 +152,8 @@ export function createSystemPanel(root, app) {
     el('div', { class: 'panel-head' },
       el('h2', {}, t('system.title')),
       el('span', { class: 'legend' },
-        el('span', { class: 'swatch', style: '--c:#0000ff' }), t('state.Inactive'),
-        el('span', { class: 'swatch', style: '--c:#00ff00' }), t('state.Active'),
-        el('span', { class: 'swatch', style: '--c:#ff0000' }), t('state.Error'))),
+        ...[['#0000ff', 'Inactive'], ['#00ff00', 'Active'], ['#ff0000', 'Error']].map(([c, state]) =>
+          el('span', { class: 'legend-item' }, el('span', { class: 'swatch', style: `--c:${c}` }), t(`state.${state}`))))),
     el('p', { class: 'panel-hint' },
       t('system.hint')),
     actions,
