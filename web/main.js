@@ -24,6 +24,7 @@ import { createTimeline } from './js/panels/timeline.js';
 import { createCompare } from './js/compare.js';
 import { createExercisePanel } from './js/panels/exercise.js';
 import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
+import { errorText } from './js/words.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -62,7 +63,8 @@ async function boot() {
       try {
         return { ok: true, value: guard.call(fn) };
       } catch (e) {
-        return { ok: false, error: e?.message ?? String(e) };
+        // The refusal in the page's language, from the error's detail (`words.js`).
+        return { ok: false, error: errorText(e), message: e?.message ?? String(e) };
       }
     },
   };

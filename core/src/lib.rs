@@ -27,4 +27,4 @@ pub mod render;
 pub mod rtc;
 pub mod system;
 
-pub use errors::{Error, Result};
+pub use errors::{Error, ErrorDetail, Result};

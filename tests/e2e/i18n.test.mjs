@@ -14,7 +14,8 @@ const ja = JSON.parse(read('web', 'i18n', 'ja.json'));
 /** Translations of texts whose English is elsewhere (the scenario files, the core). */
 const JA_ONLY = ['scenario.', 'param.'];
 const jaOnly = (k) => JA_ONLY.some((p) => k.startsWith(p));
-const placeholders = (s) => [...s.matchAll(/\{(\w+)\}/g)].map((m) => m[1]).sort();
+/** `{name}`, `{pose.x}`, `{speed:.3}`: the placeholders with their formats. */
+const placeholders = (s) => [...s.matchAll(/\{([\w.]+(?::[\w.]+)?)\}/g)].map((m) => m[1]).sort();
 const snake = (s) => s.replace(/([a-z])([A-Z])/g, '$1_$2').toLowerCase();
 
 /** Every key missing from `b` that `a` has (the page's keys only). */

@@ -20,7 +20,7 @@ use crate::views::{
     ComponentView, EventView, MapView, PlanView, PoseView, ScenarioView, TelemetryView,
     direction_name,
 };
-use crate::{Msg, js, msg};
+use crate::{Msg, PageError, js, msg, refused};
 
 #[wasm_bindgen]
 extern "C" {
@@ -59,11 +59,11 @@ pub(crate) struct Inner {
 impl Inner {
     /// An empty session (no map) and a `width × height` renderer.
     pub(crate) fn new(width: u32, height: u32) -> Msg<Self> {
-        let mut renderer = Renderer::new(width, height).map_err(msg)?;
+        let mut renderer = Renderer::new(width, height).map_err(refused)?;
         // The page shows the legend, colour bar, scale and status itself, beside the map.
         renderer.set_side_panel(false);
         Ok(Self {
-            session: Session::new().map_err(msg)?,
+            session: Session::new().map_err(refused)?,
             renderer,
             layers: PAGE_LAYERS,
             dirty: true,
@@ -77,18 +77,18 @@ impl Inner {
     /// A request that may change what is drawn.
     pub(crate) fn changed<T>(&mut self, r: rtnav::Result<T>) -> Msg<T> {
         self.dirty = true;
-        r.map_err(msg)
+        r.map_err(refused)
     }
 
     // ------------------------------------------------------------------ loading
 
     /// Loads a scenario ([`Session::load_scenario`]). On an error the current one stays.
     pub(crate) fn load_scenario(&mut self, json: &str, files: &Files) -> Msg<()> {
-        let scenario = Scenario::from_json(json).map_err(msg)?;
+        let scenario = Scenario::from_json(json).map_err(refused)?;
         let name = scenario.name.clone();
         self.session
             .load_scenario(scenario, &files.resolver())
-            .map_err(|e| format!("scenario `{name}`: {e}"))?;
+            .map_err(|e| refused(e).about("scenario", &name))?;
         self.replaced();
         Ok(())
     }
@@ -101,7 +101,7 @@ impl Inner {
     }
 
     fn load_map(&mut self, name: &str, map: GridMap) -> Msg<()> {
-        self.session.load_map(name, map).map_err(msg)?;
+        self.session.load_map(name, map).map_err(refused)?;
         self.replaced();
         Ok(())
     }
@@ -164,13 +164,13 @@ impl Inner {
     }
 
     pub(crate) fn set_speed(&mut self, speed: f64) -> Msg<()> {
-        self.session.set_speed(speed).map_err(msg)
+        self.session.set_speed(speed).map_err(refused)
     }
 
     // ------------------------------------------------------------------ lifecycle
 
     fn kind(name: &str) -> Msg<ComponentKind> {
-        ComponentKind::from_name(name).map_err(msg)
+        ComponentKind::from_name(name).map_err(refused)
     }
 
     /// One request to the session ([`Session::apply`]).
@@ -230,11 +230,11 @@ impl Inner {
 
     pub(crate) fn set_cells(&mut self, xs: &[i32], ys: &[i32], value: i16) -> Msg<()> {
         if xs.len() != ys.len() {
-            return Err(format!(
-                "MapUpdate: {} x indices but {} y indices",
-                xs.len(),
-                ys.len()
-            ));
+            return Err(PageError::CellLists {
+                xs: xs.len(),
+                ys: ys.len(),
+            }
+            .into());
         }
         let cells: Vec<(i64, i64, i16)> = xs
             .iter()
@@ -258,13 +258,13 @@ impl Inner {
         }
         self.renderer
             .render_system(system, &caption(system), self.layers)
-            .map_err(msg)?;
+            .map_err(refused)?;
         self.dirty = false;
         Ok(true)
     }
 
     pub(crate) fn resize(&mut self, width: u32, height: u32) -> Msg<()> {
-        self.renderer.resize(width, height).map_err(msg)?;
+        self.renderer.resize(width, height).map_err(refused)?;
         self.dirty = true;
         Ok(())
     }
@@ -274,10 +274,11 @@ impl Inner {
         if let Some(map) = value.as_object_mut() {
             if !map.contains_key(name) {
                 let known: Vec<&str> = map.keys().map(String::as_str).collect();
-                return Err(format!(
-                    "no layer named `{name}` (layers: {})",
-                    known.join(", ")
-                ));
+                return Err(PageError::UnknownLayer {
+                    name: name.to_owned(),
+                    known: known.join(", "),
+                }
+                .into());
             }
             map.insert(name.to_owned(), serde_json::Value::Bool(on));
         }
@@ -423,7 +424,7 @@ fn direction(backward: bool) -> Direction {
     }
 }
 
-pub(crate) fn json<T: serde::Serialize>(value: &T) -> Result<String, JsError> {
+pub(crate) fn json<T: serde::Serialize>(value: &T) -> Result<String, JsValue> {
     serde_json::to_string(value).map_err(|e| js(msg(e)))
 }
 
@@ -436,7 +437,7 @@ fn pose(x: f64, y: f64, theta_deg: f64) -> Pose {
 impl Demo {
     /// A handle with an empty system (no map yet) drawing `width × height` frames.
     #[wasm_bindgen(constructor)]
-    pub fn new(width: u32, height: u32) -> Result<Demo, JsError> {
+    pub fn new(width: u32, height: u32) -> Result<Demo, JsValue> {
         Ok(Demo(Box::new(Inner::new(width, height).map_err(js)?)))
     }
 
@@ -444,7 +445,7 @@ impl Demo {
 
     /// Loads a scenario (its JSON text; `files` holds the map files it names, by the paths
     /// it gives them) and previews its plan. On an error the current scenario stays.
-    pub fn load_scenario(&mut self, json: &str, files: &Files) -> Result<(), JsError> {
+    pub fn load_scenario(&mut self, json: &str, files: &Files) -> Result<(), JsValue> {
         self.0.load_scenario(json, files).map_err(js)
     }
 
@@ -456,17 +457,17 @@ impl Demo {
         &mut self,
         files: &Files,
         movingai_grid_size: f64,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), JsValue> {
         self.0.load_map_files(files, movingai_grid_size).map_err(js)
     }
 
     /// The scenario loaded, as JSON `{name, description, lesson}`, or `null` (a map file).
-    pub fn scenario_json(&self) -> Result<String, JsError> {
+    pub fn scenario_json(&self) -> Result<String, JsValue> {
         json(&self.0.scenario_view())
     }
 
     /// The map as JSON `{name, width, height, grid_size, origin, obstacles, key}`, or `null`.
-    pub fn map_json(&self) -> Result<String, JsError> {
+    pub fn map_json(&self) -> Result<String, JsValue> {
         json(&self.0.map_view())
     }
 
@@ -519,7 +520,7 @@ impl Demo {
     }
 
     /// Sets the speed (simulated seconds per wall second), 0.25 to 16.
-    pub fn set_speed(&mut self, speed: f64) -> Result<(), JsError> {
+    pub fn set_speed(&mut self, speed: f64) -> Result<(), JsValue> {
         self.0.set_speed(speed).map_err(js)
     }
 
@@ -532,23 +533,23 @@ impl Demo {
 
     /// Activates one component (`LocalPathPlanning` or `LocalPathPlanning0`). Returns the
     /// state reached; an illegal request is an error and changes nothing.
-    pub fn activate(&mut self, name: &str) -> Result<String, JsError> {
+    pub fn activate(&mut self, name: &str) -> Result<String, JsValue> {
         self.0.activate(name).map(|s| s.to_string()).map_err(js)
     }
 
     /// Deactivates one component. Returns the state reached.
-    pub fn deactivate(&mut self, name: &str) -> Result<String, JsError> {
+    pub fn deactivate(&mut self, name: &str) -> Result<String, JsValue> {
         self.0.deactivate(name).map(|s| s.to_string()).map_err(js)
     }
 
     /// Resets one component in Error. Returns the state reached.
-    pub fn reset(&mut self, name: &str) -> Result<String, JsError> {
+    pub fn reset(&mut self, name: &str) -> Result<String, JsValue> {
         self.0.reset(name).map(|s| s.to_string()).map_err(js)
     }
 
     /// Makes the component's next execution fail (→ Error with the reason
     /// `injected fault: requested from the page`).
-    pub fn inject_fault(&mut self, name: &str) -> Result<(), JsError> {
+    pub fn inject_fault(&mut self, name: &str) -> Result<(), JsValue> {
         self.0.inject_fault(name).map_err(js)
     }
 
@@ -575,7 +576,7 @@ impl Demo {
 
     /// Every component as JSON: `[{name, kind, instance_name, state, colour, rate,
     /// last_error, status, fault_pending}]`, in data-flow order.
-    pub fn components_json(&self) -> Result<String, JsError> {
+    pub fn components_json(&self) -> Result<String, JsValue> {
         json(&self.0.components())
     }
 
@@ -594,7 +595,7 @@ impl Demo {
         goal_y: f64,
         goal_deg: f64,
         backward: bool,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), JsValue> {
         self.0
             .apply(&Input::SetPosition {
                 start: pose(start_x, start_y, start_deg),
@@ -612,7 +613,7 @@ impl Demo {
         y: f64,
         theta_deg: f64,
         backward: bool,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), JsValue> {
         self.0
             .apply(&Input::SetGoal {
                 goal: pose(x, y, theta_deg),
@@ -624,7 +625,7 @@ impl Demo {
     /// `MapUpdate` of the cells `(xs[i], ys[i])` to `value` (1 obstacle, 0 free): one stroke
     /// (or one frame of it) is one update. Cells outside the map are an error and nothing
     /// changes; an update that changes no cell requests nothing.
-    pub fn set_cells(&mut self, xs: Vec<i32>, ys: Vec<i32>, value: i16) -> Result<(), JsError> {
+    pub fn set_cells(&mut self, xs: Vec<i32>, ys: Vec<i32>, value: i16) -> Result<(), JsValue> {
         self.0.set_cells(&xs, &ys, value).map_err(js)
     }
 
@@ -643,12 +644,12 @@ impl Demo {
     // ------------------------------------------------------------------ drawing
 
     /// Draws the current state into the frame if anything changed. Returns whether it drew.
-    pub fn render(&mut self) -> Result<bool, JsError> {
+    pub fn render(&mut self) -> Result<bool, JsValue> {
         self.0.render().map_err(js)
     }
 
     /// Changes the frame size (pixels).
-    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), JsError> {
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), JsValue> {
         self.0.resize(width, height).map_err(js)
     }
 
@@ -673,12 +674,12 @@ impl Demo {
     }
 
     /// The layers as JSON `{occupancy: true, …}`.
-    pub fn layers_json(&self) -> Result<String, JsError> {
+    pub fn layers_json(&self) -> Result<String, JsValue> {
         json(&self.0.layers())
     }
 
     /// Shows or hides a layer (`heat_map`, `trail`, …).
-    pub fn set_layer(&mut self, name: &str, on: bool) -> Result<(), JsError> {
+    pub fn set_layer(&mut self, name: &str, on: bool) -> Result<(), JsValue> {
         self.0.set_layer(name, on).map_err(js)
     }
 
@@ -732,7 +733,7 @@ impl Demo {
 
     /// Where the robot has been, as JSON `[[x, y], …]` in metres (points at least 2 cm
     /// apart, oldest first).
-    pub fn trail_json(&self) -> Result<String, JsError> {
+    pub fn trail_json(&self) -> Result<String, JsValue> {
         json(&self.0.system().record().trail())
     }
 
@@ -745,17 +746,17 @@ impl Demo {
 
     /// The events since the last call, oldest first, as JSON `[{time_s, kind, level, text,
     /// data}]`.
-    pub fn take_events(&mut self) -> Result<String, JsError> {
+    pub fn take_events(&mut self) -> Result<String, JsValue> {
         json(&self.0.take_events())
     }
 
     /// The telemetry readout as JSON.
-    pub fn telemetry_json(&self) -> Result<String, JsError> {
+    pub fn telemetry_json(&self) -> Result<String, JsValue> {
         json(&self.0.telemetry())
     }
 
     /// Start, goal, paths and control points as JSON.
-    pub fn plan_json(&self) -> Result<String, JsError> {
+    pub fn plan_json(&self) -> Result<String, JsValue> {
         json(&self.0.plan())
     }
 
@@ -769,7 +770,7 @@ impl Demo {
         component: &str,
         port: &str,
         values: Vec<f64>,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), JsValue> {
         self.0.inject_input(component, port, values).map_err(js)
     }
 

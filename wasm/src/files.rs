@@ -8,7 +8,7 @@ use rtnav::map::formats::ros;
 use rtnav::system::{MapSource, MemoryResolver, UnknownSpec};
 use wasm_bindgen::prelude::*;
 
-use crate::Msg;
+use crate::{Msg, PageError, msg, refused};
 
 /// Named files in memory: paths as a scenario writes them (`fixtures/maps/…`), or the
 /// names of the files a user picked.
@@ -48,9 +48,6 @@ enum Kind {
     RosImage,
     MovingAi,
 }
-
-const EXPECTED: &str = "expected an rtnav JSON map (.json), a ROS map (its .yaml and its \
-                        .pgm or .png image, picked together) or a MovingAI map (.map)";
 
 /// The loader for a file: by its extension, else by its first characters.
 fn kind(name: &str, bytes: &[u8]) -> Option<Kind> {
@@ -96,14 +93,14 @@ impl Files {
         let (name, source) = self.map_source(movingai_grid_size)?;
         let map = source
             .load(&self.resolver())
-            .map_err(|e| format!("`{name}`: {e}"))?;
+            .map_err(|e| refused(e).about("file", &name))?;
         Ok((name, map))
     }
 
     /// Which file is the map and how to read it.
     fn map_source(&self, movingai_grid_size: f64) -> Msg<(String, MapSource)> {
         if self.0.is_empty() {
-            return Err(format!("no file chosen: {EXPECTED}"));
+            return Err(PageError::NoFile.into());
         }
         let kinds: Vec<(&str, &[u8], Option<Kind>)> = self
             .0
@@ -111,19 +108,25 @@ impl Files {
             .map(|(n, b)| (n.as_str(), b.as_slice(), kind(n, b)))
             .collect();
         if let Some((name, ..)) = kinds.iter().find(|k| k.2.is_none()) {
-            return Err(format!("`{name}` is not a map file I know: {EXPECTED}"));
+            return Err(PageError::UnknownFile {
+                name: (*name).to_owned(),
+            }
+            .into());
         }
         if let Some(&(name, bytes, _)) = kinds.iter().find(|k| k.2 == Some(Kind::RosYaml)) {
             // Checked here for a clearer message than "cannot read": the image must have
             // been picked too.
-            let text =
-                std::str::from_utf8(bytes).map_err(|e| format!("`{name}` is not text: {e}"))?;
-            let yaml = ros::parse_yaml(text).map_err(|e| format!("`{name}`: {e}"))?;
+            let text = std::str::from_utf8(bytes).map_err(|e| PageError::NotText {
+                name: name.to_owned(),
+                reason: msg(e).message,
+            })?;
+            let yaml = ros::parse_yaml(text).map_err(|e| refused(e).about("file", name))?;
             if !self.0.contains_key(&yaml.image) {
-                return Err(format!(
-                    "`{name}` names the image `{}`: pick it together with the YAML file",
-                    yaml.image
-                ));
+                return Err(PageError::MissingImage {
+                    name: name.to_owned(),
+                    image: yaml.image,
+                }
+                .into());
             }
             return Ok((
                 name.to_owned(),
@@ -134,16 +137,20 @@ impl Files {
             ));
         }
         let [(name, _, Some(k))] = kinds.as_slice() else {
-            return Err(format!("{} files chosen: {EXPECTED}", self.0.len()));
+            return Err(PageError::FileCount {
+                count: self.0.len(),
+            }
+            .into());
         };
         let path = (*name).to_owned();
         let source = match k {
             Kind::Json => MapSource::Json { path },
             Kind::MovingAi => {
                 if !(movingai_grid_size.is_finite() && movingai_grid_size > 0.0) {
-                    return Err(format!(
-                        "MovingAI cell size {movingai_grid_size} m must be positive"
-                    ));
+                    return Err(PageError::BadCellSize {
+                        value: movingai_grid_size,
+                    }
+                    .into());
                 }
                 MapSource::Movingai {
                     path,
@@ -152,9 +159,10 @@ impl Files {
                 }
             }
             Kind::RosImage | Kind::RosYaml => {
-                return Err(format!(
-                    "`{name}` is an image: a ROS map needs its .yaml file too (pick both)"
-                ));
+                return Err(PageError::ImageOnly {
+                    name: (*name).to_owned(),
+                }
+                .into());
             }
         };
         Ok(((*name).to_owned(), source))

@@ -7,7 +7,8 @@
 //! time (spec §6: components never read a clock). The frame is drawn into Rust memory and
 //! shown by the page without a copy: a `Uint8ClampedArray` view at [`Demo::frame_ptr`] over
 //! `memory.buffer` → `ImageData` → `putImageData` (the Rust and WebAssembly book's game of
-//! life). Errors become `JsError`s only here, with the core's message.
+//! life). Errors become JavaScript `Error`s only here ([`js`]), with the core's message and
+//! the error as data (`detail`) for the page's words.
 //!
 //! Panics are bugs (spec §1), but a page must show one rather than freeze: the panic hook
 //! installed at start-up records the message, which [`has_panicked`] and [`panic_message`]
@@ -21,6 +22,7 @@ use wasm_bindgen::prelude::*;
 mod demo;
 mod exercise;
 mod files;
+mod refusal;
 mod replay;
 mod system_view;
 mod teach;
@@ -63,16 +65,4 @@ pub fn panic_message() -> Option<String> {
         .clone()
 }
 
-/// A result whose error is the message the page shows. Kept apart from `JsError` (which
-/// exists only in a browser) so the native tests can check the exact words.
-pub(crate) type Msg<T> = Result<T, String>;
-
-/// An error's message.
-pub(crate) fn msg(e: impl std::fmt::Display) -> String {
-    e.to_string()
-}
-
-/// A message as a JavaScript `Error`.
-pub(crate) fn js(e: String) -> JsError {
-    JsError::new(&e)
-}
+pub(crate) use refusal::{Msg, PageError, js, msg, refused};

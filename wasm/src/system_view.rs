@@ -13,14 +13,14 @@ impl Demo {
     /// components: [{name, instance_name, rtc, state, rate_hz, ports: [{name, kind,
     /// interface, operations, count, last: {tm, text}}]}], connections: [{id, kind, from,
     /// to, interface, carried, cut, cuttable}]}`.
-    pub fn system_json(&self) -> Result<String, JsError> {
+    pub fn system_json(&self) -> Result<String, JsValue> {
         json(&self.0.system().wiring().graph())
     }
 
     /// Cuts the data connection `id` (`DriveControl.TargetVelocity->MotorControl.TargetVelocity`):
     /// logged; refused with the reason for an unknown id, a connection to InventGUI or one
     /// already cut.
-    pub fn cut_connection(&mut self, id: &str) -> Result<(), JsError> {
+    pub fn cut_connection(&mut self, id: &str) -> Result<(), JsValue> {
         self.0
             .apply(&Input::CutConnection {
                 connection: id.to_owned(),
@@ -29,7 +29,7 @@ impl Demo {
     }
 
     /// Restores the cut data connection `id`: logged; refused if it is not cut.
-    pub fn restore_connection(&mut self, id: &str) -> Result<(), JsError> {
+    pub fn restore_connection(&mut self, id: &str) -> Result<(), JsValue> {
         self.0
             .apply(&Input::RestoreConnection {
                 connection: id.to_owned(),

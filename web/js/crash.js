@@ -4,6 +4,7 @@
 // and further calls throw. `has_panicked()` / `panic_message()` are free functions exported
 // by rtnav-wasm that read what the panic hook recorded.
 import { has_panicked, panic_message } from '../pkg/rtnav_wasm.js';
+import { t } from './i18n.js';
 
 export function createCrashGuard(box, messageEl) {
   const listeners = [];
@@ -27,7 +28,7 @@ export function createCrashGuard(box, messageEl) {
       if (guard.crashed) return true;
       if (!has_panicked()) return false;
       guard.crashed = true;
-      messageEl.textContent = panic_message() ?? 'unknown panic';
+      messageEl.textContent = panic_message() ?? t('crash.unknown');
       box.hidden = false;
       document.body.dataset.crashed = 'true';
       for (const l of listeners) l();

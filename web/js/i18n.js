@@ -43,10 +43,66 @@ export function language() {
   return lang;
 }
 
-/** The text of `key` with `{name}` placeholders filled from `vars`. */
+/** `v` with six significant digits, without trailing zeros: the core's `present::number`. */
+export function number(v) {
+  if (v === null || v === undefined) return 'NaN';
+  if (!Number.isFinite(v)) return String(v).replace('Infinity', 'inf');
+  if (v === 0) return '0';
+  const a = Math.abs(v);
+  const trim = (s) => (s.includes('.') ? s.replace(/0+$/, '').replace(/\.$/, '') : s);
+  if (a < 1e-4 || a >= 1e9) {
+    const [m, e] = v.toExponential(5).split('e');
+    return `${trim(m)}e${e.replace('+', '')}`;
+  }
+  const decimals = Math.min(12, Math.max(0, 5 - Math.floor(Math.log10(a))));
+  return trim(v.toFixed(decimals));
+}
+
+/**
+ * A placeholder's value as text: `fmt` is empty (as it is; a list joined with ", "), `.N`
+ * (N decimals, Rust's `{:.N}`), `n` ([`number`]) or `deg.N` (radians in degrees, N decimals).
+ */
+function show(v, fmt) {
+  if (Array.isArray(v)) return v.map((x) => show(x, fmt)).join(', ');
+  if (v === null || v === undefined) return fmt ? 'NaN' : '';
+  if (typeof v !== 'number') return String(v);
+  if (!fmt) return String(v);
+  if (fmt === 'n') return number(v);
+  const deg = fmt.startsWith('deg');
+  const digits = Number(fmt.replace(/^deg/, '').replace(/^\./, ''));
+  return (deg ? (v * 180) / Math.PI : v).toFixed(digits);
+}
+
+/** `vars`' value at a dotted path (`pose.x`, `cell.0`), or undefined. */
+function at(vars, path) {
+  let v = vars;
+  for (const part of path.split('.')) {
+    if (v === null || typeof v !== 'object' || !(part in v)) return undefined;
+    v = v[part];
+  }
+  return v;
+}
+
+/**
+ * The text of `key` with placeholders filled from `vars`: `{name}`, a dotted path
+ * `{pose.x}` / `{cell.0}`, and a format after a colon (`{speed:.3}`, `{value:n}`,
+ * `{theta:deg.1}`, see `show`). A placeholder without a value stays as written.
+ */
 export function t(key, vars = {}) {
-  const text = words[key] ?? english[key] ?? key;
-  return text.replace(/\{(\w+)\}/g, (m, name) => (name in vars ? String(vars[name]) : m));
+  return fill(words[key] ?? english[key] ?? key, vars);
+}
+
+/** `text` with its placeholders filled from `vars` (see `t`). */
+export function fill(text, vars = {}) {
+  return text.replace(/\{([\w.]+)(?::([\w.]+))?\}/g, (m, path, fmt) => {
+    const v = at(vars, path);
+    return v === undefined ? m : show(v, fmt);
+  });
+}
+
+/** The English catalogue (the templates the core's English texts are written from). */
+export function englishWords() {
+  return english;
 }
 
 /** Whether the catalogue has `key` (the scenarios' Japanese texts are optional lookups). */

@@ -9,6 +9,7 @@
 import { Demo, Files } from '../pkg/rtnav_wasm.js';
 import { el } from './dom.js';
 import { t, has } from './i18n.js';
+import { errorText } from './words.js';
 
 const INDEX_URL = 'fixtures/index.json';
 /** MovingAI maps have no cell size: they are read at this many metres per cell. */
@@ -116,7 +117,7 @@ export function createScenarios(dom, app) {
     try {
       name = app.guard.call(() => Demo.share_scenario(token));
     } catch (e) {
-      return refuseShare(e?.message ?? String(e));
+      return refuseShare(errorText(e));
     }
     if (name === undefined) return false;
     if (!index.scenarios.some((s) => s.name === name)) {

@@ -2,7 +2,8 @@
 
 /// Errors of the global planner (spec §5 "GlobalPathPlanning"). Each is also sent as a
 /// `PlanningFailure` notice by the component.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum GlobalPlanningError {
     /// Planning was requested before any map was set.

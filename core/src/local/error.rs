@@ -3,7 +3,8 @@
 /// Errors of the LocalPathPlanning component (seed 000, spec §3): a `LocalPath` service call
 /// refused (nothing held changes), or the reason a local plan could not be made (sent to the
 /// GUI as the planning-failure notice of 000 §5.2.4.13).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum LocalPathError {
     /// A number that must be finite is NaN or infinite.

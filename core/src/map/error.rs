@@ -1,7 +1,8 @@
 //! Errors building, loading or updating a grid map (spec §2).
 
 /// Errors building, loading or updating a grid map (spec §2).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum MapError {
     /// A dimension of zero (or negative in the source data).

@@ -3,7 +3,8 @@
 /// Errors of the motion components: MotorControl (spec §4), the physics, DriveControl and
 /// Localization (spec §5). A component that meets one of these on a data port does not fail:
 /// it goes to its safe state (zero torque, zero velocity, the held pose) and reports it.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum MotionError {
     /// A NaN or infinite number where a finite one is needed.

@@ -2,7 +2,8 @@
 
 /// Errors of the renderer (spec §5 InventGUI): a frame size or a scene it cannot draw. Drawing
 /// itself never fails for a valid scene.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum RenderError {
     /// A frame with no pixels, or larger than the renderer accepts.

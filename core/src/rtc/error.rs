@@ -4,7 +4,8 @@
 use super::{ContextState, LifecycleState, Request};
 
 /// Errors of the RT-component lifecycle and execution context (spec §1, seed 003).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum LifecycleError {
     /// The request is not a legal transition from the component's current state.
@@ -62,7 +63,8 @@ pub enum LifecycleError {
 }
 
 /// Errors of configuration parameters and `.conf` files (spec §1).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum ConfigError {
     /// No parameter of that name.
@@ -92,7 +94,8 @@ pub enum ConfigError {
         name: String,
         /// The text refused.
         value: String,
-        /// The expected type, e.g. `double`.
+        /// The expected type, e.g. `double` (serialized as `type`: `kind` names the variant).
+        #[serde(rename = "type")]
         kind: &'static str,
         /// 1-based line in the `.conf` file, if it came from one.
         line: Option<usize>,
@@ -121,7 +124,7 @@ fn at_line(line: Option<usize>) -> String {
 
 /// A timestamp whose `nsec` is not below 10⁹ (spec §4 Decision 0.2): refused where the
 /// sample enters, by [`Time::checked`](super::Time::checked).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error, serde::Serialize)]
 #[error(
     "{what}: timestamp {{sec: {sec}, nsec: {nsec}}} is not valid: nsec must be below 1000000000"
 )]

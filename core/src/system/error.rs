@@ -5,7 +5,8 @@ use crate::rtc::ConfigError;
 
 /// A request to the whole system that cannot be carried out. Nothing held changes when one
 /// is returned.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum SystemError {
     /// An input port the system cannot write into ([`System::inject_input`](crate::system::System::inject_input)).
@@ -117,7 +118,8 @@ pub enum SystemError {
 }
 
 /// A scenario file that cannot be read or used, or a file it names that cannot be supplied.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum ScenarioError {
     /// A scenario file that cannot be read or used.
@@ -139,7 +141,8 @@ pub enum ScenarioError {
 }
 
 /// A request of the page's session (its clock, its share links) that cannot be carried out.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum SessionError {
     /// A share link's token that cannot be used.
@@ -168,7 +171,8 @@ pub enum SessionError {
 
 /// A configuration bundle (`System::load_conf`) that cannot be read or applied; nothing
 /// changes.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, strum::VariantNames)]
+#[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum ConfBundleError {
     /// A line of a configuration bundle (`System::load_conf`) before the first component
@@ -217,22 +221,35 @@ pub enum ConfBundleError {
         component: String,
         /// 1-based line in the whole file.
         line: usize,
-        /// The problem, as the component's configuration reports it.
+        /// The problem, as the component's configuration reports it (shown to the page as
+        /// a `Config` error of its own, without its line).
+        #[serde(serialize_with = "problem_detail")]
         problem: ConfigError,
     },
 }
 
 /// A `.conf` problem without its line (the bundle's error names the line of the whole file).
 fn conf_problem(e: &ConfigError) -> String {
+    match e {
+        ConfigError::Syntax { text, reason, .. } => format!("cannot read `{text}`: {reason}"),
+        e => without_line(e).to_string(),
+    }
+}
+
+/// `e` with its line (in the component's block) left out.
+fn without_line(e: &ConfigError) -> ConfigError {
     let mut e = e.clone();
     match &mut e {
         ConfigError::UnknownParameter { line, .. }
         | ConfigError::OutOfRange { line, .. }
         | ConfigError::BadValue { line, .. } => *line = None,
-        ConfigError::Syntax { text, reason, .. } => {
-            return format!("cannot read `{text}`: {reason}");
-        }
         _ => {}
     }
-    e.to_string()
+    e
+}
+
+/// `ConfBlock`'s problem as the page reads it: a `Config` error of its own
+/// ([`ErrorDetail`](crate::errors::ErrorDetail)), without its line.
+fn problem_detail<S: serde::Serializer>(e: &ConfigError, s: S) -> Result<S::Ok, S::Error> {
+    serde::Serialize::serialize(&crate::Error::from(without_line(e)).detail(), s)
 }

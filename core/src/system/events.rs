@@ -19,8 +19,9 @@ pub struct SystemEvent {
     pub kind: EventKind,
 }
 
-/// What happened.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// What happened. `EventKind::VARIANTS` (`strum::VariantNames`) lists every kind by the name
+/// it serializes with: what a GUI that says events in its own words must have words for.
+#[derive(Debug, Clone, PartialEq, Serialize, strum::VariantNames)]
 #[non_exhaustive]
 pub enum EventKind {
     /// A map was loaded (MapBuilder's `SetMap`).

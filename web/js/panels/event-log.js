@@ -42,6 +42,7 @@ export function createEventLog(root, app) {
     const item = el('li', { dataset: { kind: e.kind, level: e.level, t: String(e.time_s) } },
       el('time', {}, seconds(e.time_s)),
       el('span', { class: 'text' }, eventText(e)));
+    item.rtnavEvent = e; // what the core sent (the end-to-end test reads it back)
     let before = list.firstElementChild;
     while (before && Number(before.dataset.t) > e.time_s) before = before.nextElementSibling;
     list.insertBefore(item, before);

@@ -10,11 +10,11 @@
 // stage's `hover` event (`pixel_to_cell`); it is read again while shown, a few times a
 // second, because the field changes as the robot drives.
 import { el, setText } from '../dom.js';
-import { t } from '../i18n.js';
+import { t, has } from '../i18n.js';
 
 const POLL_MS = 250;
 
-const yesNo = (b) => (b ? 'yes' : 'no');
+const yesNo = (b) => t(b ? 'inspector.yes' : 'inspector.no');
 function num(v, digits = 3) {
   if (v === null || v === undefined) return '—';
   if (!Number.isFinite(v)) return String(v);
@@ -26,19 +26,19 @@ function num(v, digits = 3) {
 /** The rows: key, label, how to read it from the answer, how to show it, a hint. */
 const metres = (v) => `${v.toFixed(2)} m`;
 const FIELDS = [
-  ['cell', t('inspector.cell'), (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, 'Map cell (x, y), x to the right, y up'],
-  ['centre', t('inspector.centre'), (j) => j.centre, (v) => `x ${metres(v[0])}, y ${metres(v[1])}`, 'The cell\'s centre in the map\'s coordinates, metres (origin + (index + ½) · GridSize)'],
-  ['occupancy', t('inspector.occupancy'), (j) => j.occupancy, (v) => `${v} · ${v === 0 ? 'free' : 'obstacle'}`, 'The map value: 0 free, 1 obstacle'],
-  ['obstacle_distance', t('inspector.obstacle_distance'), (j) => j.obstacle_distance, (v) => `${num(v)} m`, 'Straight distance to the nearest obstacle cell (exact EDT)'],
-  ['impassable', t('inspector.impassable'), (j) => j.impassable, (v) => (v ? 'yes · impassable' : 'no'), 'Closer to an obstacle than dmin: the planners do not enter it'],
-  ['potential', t('inspector.potential'), (j) => j.field?.potential ?? null, num, 'LocalPathPlanning\'s potential G (000 §5.2.4.9); the path descends it'],
-  ['parent', '= G(parent)', (j) => j.field?.parent ?? null, (v) => (v ? `${num(v.potential)} at (${v.x}, ${v.y})` : '—'),
-    'The neighbour the cell got its potential from (the first finalized, lowest), and that potential: G = G(parent) + R + A + P'],
-  ['repulsion', t('inspector.repulsion'), (j) => j.field?.repulsion ?? null, num, 'The obstacles\' part of the potential'],
-  ['attraction', t('inspector.attraction'), (j) => j.field?.attraction ?? null, num, 'The goal\'s part of the potential'],
-  ['posture', t('inspector.posture'), (j) => j.field?.posture ?? null, num, 'The start and goal posture\'s part (PostureConsiderationLevel)'],
-  ['state', t('inspector.state'), (j) => j.field?.state ?? null, (v) => v ?? '—', 'The cell\'s state in the potential field'],
-  ['unreached', t('inspector.unreached'), (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), 'Not reached by the field\'s wave from the goal'],
+  ['cell', t('inspector.cell'), (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, t('inspector.cell.title')],
+  ['centre', t('inspector.centre'), (j) => j.centre, (v) => `x ${metres(v[0])}, y ${metres(v[1])}`, t('inspector.centre.title')],
+  ['occupancy', t('inspector.occupancy'), (j) => j.occupancy, (v) => `${v} · ${t(v === 0 ? 'inspector.free' : 'inspector.obstacle')}`, t('inspector.occupancy.title')],
+  ['obstacle_distance', t('inspector.obstacle_distance'), (j) => j.obstacle_distance, (v) => `${num(v)} m`, t('inspector.obstacle_distance.title')],
+  ['impassable', t('inspector.impassable'), (j) => j.impassable, (v) => (v ? t('inspector.impassable.yes') : t('inspector.no')), t('inspector.impassable.title')],
+  ['potential', t('inspector.potential'), (j) => j.field?.potential ?? null, num, t('inspector.potential.title')],
+  ['parent', t('inspector.parent'), (j) => j.field?.parent ?? null, (v) => (v ? t('inspector.parent.value', { g: num(v.potential), x: v.x, y: v.y }) : '—'),
+    t('inspector.parent.title')],
+  ['repulsion', t('inspector.repulsion'), (j) => j.field?.repulsion ?? null, num, t('inspector.repulsion.title')],
+  ['attraction', t('inspector.attraction'), (j) => j.field?.attraction ?? null, num, t('inspector.attraction.title')],
+  ['posture', t('inspector.posture'), (j) => j.field?.posture ?? null, num, t('inspector.posture.title')],
+  ['state', t('inspector.state'), (j) => j.field?.state ?? null, (v) => (v === null ? '—' : has(`inspector.state.${v}`) ? t(`inspector.state.${v}`) : v), t('inspector.state.title')],
+  ['unreached', t('inspector.unreached'), (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), t('inspector.unreached.title')],
 ];
 
 export function createInspector(root, app) {
@@ -96,15 +96,15 @@ export function createInspector(root, app) {
       dd.dataset.value = JSON.stringify(v);
       setText(dd, fmt(v));
     }
-    const field = j.field ? '' : ' · no potential field yet';
-    const at = `(${j.x}, ${j.y}) at x ${metres(j.centre[0])}, y ${metres(j.centre[1])}`;
-    setText(where, `${hovering ? 'Under the mouse' : 'Last cell under the mouse'}: ${at}${field}`);
+    const field = j.field ? '' : t('inspector.no_field');
+    const at = t('inspector.at', { x: j.x, y: j.y, cx: metres(j.centre[0]), cy: metres(j.centre[1]) });
+    setText(where, t(hovering ? 'inspector.under' : 'inspector.last', { at, field }));
   }
 
   app.on('hover', (c) => {
     hovering = Boolean(c);
     if (!c) {
-      if (cell) setText(where, `Last cell under the mouse: (${cell[0]}, ${cell[1]})`);
+      if (cell) setText(where, t('inspector.last', { at: `(${cell[0]}, ${cell[1]})`, field: '' }));
       return;
     }
     if (cell && c[0] === cell[0] && c[1] === cell[1]) return;

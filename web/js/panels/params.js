@@ -14,14 +14,15 @@
 // (`data-value`, `data-effective`, `data-pending`) for the end-to-end tests.
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
-import { t, language } from '../i18n.js';
+import { t, has, language } from '../i18n.js';
+import { reasonText } from '../words.js';
 
 const POLL_MS = 500;
 const REFLECTION = {
   always: [t('params.always'), t('params.always.title')],
   on_activation: [t('params.on_activation'), t('params.on_activation.title')],
 };
-const PD_GAINS = [['PGainL', 'P left'], ['PGainR', 'P right'], ['DGainL', 'D left'], ['DGainR', 'D right']];
+const PD_GAINS = [['PGainL', t('params.pd.p_left')], ['PGainR', t('params.pd.p_right')], ['DGainL', t('params.pd.d_left')], ['DGainR', t('params.pd.d_right')]];
 /** Notes beside a parameter, about the system as a whole. */
 const NOTES = {
   'LocalPathPlanning/dmin': t('params.dmin_note'),
@@ -66,11 +67,11 @@ export function createParamsPanel(root, app) {
     const text = await file.text();
     const r = app.attempt(() => demo.conf_import(text));
     if (!r.ok) {
-      say(`${file.name} not imported (nothing changed): ${r.error}`, 'error');
+      say(t('params.import.refused', { file: file.name, error: r.error }), 'error');
       app.log.page(t('refused', { what: t('params.import.what'), error: r.error }), 'warn');
       return;
     }
-    say(`${file.name} imported.`, 'success');
+    say(t('params.import.done', { file: file.name }), 'success');
     app.log.page(t('params.imported', { file: file.name }), 'info');
     app.emit('changed');
   });
@@ -121,18 +122,20 @@ export function createParamsPanel(root, app) {
     const error = el('div', { class: 'param-error', role: 'alert', hidden: true });
     const warning = el('div', { class: 'param-warning', role: 'status', hidden: true });
     const about = NOTES[`${c.component}/${p.name}`];
+    // The description in the page's language: the seed's own Japanese, else the catalogue's.
+    const described = language() === 'ja' ? (p.seed_text ?? t(`param.${c.component}.${p.name}`)) : p.description;
     const node = el('div', { class: 'param', dataset: { component: c.component, name: p.name, reflection: p.reflection } },
-      el('label', { class: 'param-name', for: id, title: p.description }, p.name),
+      el('label', { class: 'param-name', for: id, title: described }, p.name),
       input,
       el('span', { class: 'param-unit' }, unitText(p.unit)),
       el('div', { class: 'param-desc', id: `${id}-desc` },
         language() === 'ja'
-          ? el('span', { class: 'param-ja', lang: 'ja' }, p.seed_text ?? t(`param.${c.component}.${p.name}`))
+          ? el('span', { class: 'param-ja', lang: 'ja' }, described)
           : el('span', { class: 'param-en' }, p.description),
         p.seed_text && language() !== 'ja' ? el('span', { class: 'param-ja', lang: 'ja', title: t('params.seed_words') }, p.seed_text) : null,
         about ? el('span', { class: 'param-note' }, about) : null),
       el('div', { class: 'param-meta', id: `${id}-meta` },
-        el('span', { class: 'param-range', title: p.type === 'int' ? t('params.int') : t('params.real') }, `${p.type} ${p.range}`),
+        el('span', { class: 'param-range', title: p.type === 'int' ? t('params.int') : t('params.real') }, `${has(`params.type.${p.type}`) ? t(`params.type.${p.type}`) : p.type} ${p.range}`),
         el('span', { class: 'param-reflection', title: reflectTitle }, reflectText),
         pendingTag),
       warning,
@@ -175,14 +178,11 @@ export function createParamsPanel(root, app) {
     const number = (t) => (t.trim() === '' ? Number.NaN : Number(t));
     const bounds = el('span', { class: 'pd-bounds', id: 'pd-bounds' });
     const explain = el('div', { class: 'pd-explain', id: 'pd-explain' },
-      el('p', {}, 'What the gains act on (spec §4): torque = P·(target angle − angle) + D·(target rate − rate). ',
-        'The target angle is re-anchored at the current angle every tick, so P·(target angle − angle) = P·(ω* + ω)·Δt/2: ',
-        'P works as a tiny rate gain of P·Δt/2, and D is the gain that holds the wheel at its target rate.'),
-      el('p', {}, 'The loop is stable while P < 2·D/Δt; above it the rate feedback turns positive and the wheel runs away. ',
-        'With D = 0 nothing holds the wheel: it is limp. ', bounds));
-    const form = el('form', { class: 'pd-form', id: 'pd-form', title: 'Motor::SetPDGain (002 §5.2.2): all four gains in one service call' },
+      el('p', {}, t('params.pd.explain')),
+      el('p', {}, t('params.pd.stability'), ' ', bounds));
+    const form = el('form', { class: 'pd-form', id: 'pd-form', title: t('params.pd.title') },
       explain,
-      el('div', { class: 'pd-title' }, 'Service Motor::SetPDGain'),
+      el('div', { class: 'pd-title' }, t('params.pd.service')),
       el('div', { class: 'pd-fields' }, ...fields,
         el('button', { type: 'submit', id: 'pd-send' }, 'SetPDGain')),
       error);
@@ -236,12 +236,12 @@ export function createParamsPanel(root, app) {
         row.node.classList.toggle('changed', p.value !== p.default);
         row.node.classList.toggle('warned', Boolean(p.warning));
         row.node.dataset.warning = p.warning ?? '';
-        setText(row.warning, p.warning ? `⚠ ${p.warning}` : '');
+        setText(row.warning, p.warning ? `⚠ ${reasonText(p.warning)}` : '');
         row.warning.hidden = !p.warning;
         row.node.title = p.value !== p.default ? t('params.default', { value: show(p.default) }) : '';
         if (p.pending) pending++;
       }
-      setText(group.count, `${c.params.length} parameters${pending ? ` · ${pending} pending` : ''}`);
+      setText(group.count, t(pending ? 'params.count.pending' : 'params.count', { n: c.params.length, pending }));
       if (group.pd) {
         for (const [n, input] of group.pd) {
           if (document.activeElement !== input) input.value = show(held.get(`MotorControl/${n}`)?.value);
@@ -249,7 +249,7 @@ export function createParamsPanel(root, app) {
         // The bounds now: 2·D/Δt for each wheel.
         const dt = c.period_s;
         const bound = (d) => Number((2 * held.get(`MotorControl/${d}`).value / dt).toPrecision(6));
-        setText(group.pd.bounds, `Here Δt = ${Number((dt * 1000).toPrecision(6))} ms: P must stay below ${bound('DGainL')} (left) and ${bound('DGainR')} (right).`);
+        setText(group.pd.bounds, t('params.pd.bounds', { dt: Number((dt * 1000).toPrecision(6)), left: bound('DGainL'), right: bound('DGainR') }));
       }
     }
   }

@@ -32,8 +32,8 @@ const PLOTS = [
   {
     id: 'plot-rates', title: t('plots.rates'), unit: 'rad/s',
     series: [
-      ['target_rate_l', 'target L', LEFT, DASH], ['rate_l', 'L', LEFT],
-      ['target_rate_r', 'target R', RIGHT, DASH], ['rate_r', 'R', RIGHT],
+      ['target_rate_l', t('plots.target_l'), LEFT, DASH], ['rate_l', t('plots.l'), LEFT],
+      ['target_rate_r', t('plots.target_r'), RIGHT, DASH], ['rate_r', t('plots.r'), RIGHT],
     ],
   },
   {
@@ -42,15 +42,15 @@ const PLOTS = [
     // command far beyond it is cut at the frame and said so.
     id: 'plot-torques', title: t('plots.torques'), unit: 'N·m',
     series: [
-      ['torque_l', 'cmd L', LEFT, DASH], ['applied_l', 'L', LEFT],
-      ['torque_r', 'cmd R', RIGHT, DASH], ['applied_r', 'R', RIGHT],
+      ['torque_l', t('plots.cmd_l'), LEFT, DASH], ['applied_l', t('plots.l'), LEFT],
+      ['torque_r', t('plots.cmd_r'), RIGHT, DASH], ['applied_r', t('plots.r'), RIGHT],
     ],
     range: ['applied_l', 'applied_r'],
     limit: ['max_torque', '±MaxTorque'], symmetric: true,
   },
   {
     id: 'plot-velocity', title: t('plots.velocity'), unit: 'm/s · rad/s',
-    series: [['v_cmd', 'v cmd', V, DASH], ['v', 'v', V], ['w_cmd', 'ω cmd', W, DASH], ['w', 'ω', W]],
+    series: [['v_cmd', t('plots.v_cmd'), V, DASH], ['v', 'v', V], ['w_cmd', t('plots.w_cmd'), W, DASH], ['w', 'ω', W]],
   },
   {
     id: 'plot-deviation', title: t('plots.deviation'), unit: 'm',

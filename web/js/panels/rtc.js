@@ -5,7 +5,7 @@
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';
-import { componentStatus } from '../words.js';
+import { componentStatus, reasonText } from '../words.js';
 
 const ACTIONS = {
   Inactive: ['activate', t('rtc.activate')],
@@ -27,9 +27,9 @@ function paint(badge, state, colour) {
 export function createRtcPanel(root, app) {
   const { demo } = app;
 
-  const request = (what, fn) => {
+  const request = (what, fn, ends = false) => {
     // A request that leaves a state (Reset, Activate) ends the notices about it.
-    if (/^(Reset|Activate)/.test(what)) app.notice.endState();
+    if (ends) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
       app.notice.show(t('refused', { what, error: r.error }), 'error');
@@ -52,7 +52,7 @@ export function createRtcPanel(root, app) {
     const fault = el('button', { type: 'button', class: 'fault danger', title: t('rtc.fault.title', { name: c.instance_name }) }, t('rtc.fault'));
     action.addEventListener('click', () => {
       const what = action.dataset.action;
-      request(`${action.textContent} ${c.name}`, () => demo[what](c.name));
+      request(t(`system.act.${what}`, { name: c.name }), () => demo[what](c.name), what === 'activate' || what === 'reset');
     });
     fault.addEventListener('click', () => request(t('rtc.fault.request', { name: c.name }), () => demo.inject_fault(c.name)));
     let glitch = null;
@@ -92,7 +92,7 @@ export function createRtcPanel(root, app) {
         setText(r.name, c.instance_name);
         setText(r.rate, `${c.rate} Hz`);
         setText(r.status, componentStatus(c.status));
-        const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: c.last_error }) : '';
+        const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: reasonText(c.last_error) }) : '';
         setText(r.reason, why);
         r.reason.hidden = !why;
         const [action, label] = ACTIONS[c.state] ?? ['activate', t('rtc.activate')];

@@ -11,6 +11,8 @@
 // port lists its connections, and a data connection between two components can be cut and
 // restored — a request the core logs (`Input::CutConnection`).
 import { el, setText, textOn } from '../dom.js';
+import { t, has } from '../i18n.js';
+import { componentStatus, reasonText } from '../words.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 /** How often the view reads the description while shown [ms]. */
@@ -25,9 +27,9 @@ const GAP_Y = 26;
 const PAD = 12;
 /** Which side of the box a port sits on. */
 const LEFT = new Set(['in', 'provided']);
-const KIND_WORDS = { in: 'data in', out: 'data out', provided: 'service provided', required: 'service required' };
-const GUI_NOTE = 'InventGUI is the person\'s side (this page, the command line, a scenario\'s timeline): it makes '
-  + 'the service calls and is told the paths, failures, safety stops and bumps. It is not an RT-component.';
+/** A port's kind in words (`system.kind.in`, …). */
+const kindWords = (kind) => (has(`system.kind.${kind}`) ? t(`system.kind.${kind}`) : kind);
+const GUI_NOTE = t('system.gui_note');
 
 function svg(tag, attrs = {}, ...children) {
   const node = document.createElementNS(SVG, tag);
@@ -84,11 +86,11 @@ function curve(a, b) {
 }
 
 function describePort(component, p) {
-  const head = `${component}.${p.name} · ${KIND_WORDS[p.kind] ?? p.kind} · ${p.interface}`;
-  const ops = p.operations?.length ? `operations: ${p.operations.join(', ')}` : null;
-  const unit = p.kind === 'provided' || p.kind === 'required' ? 'calls' : 'samples';
-  const last = p.last ? p.last.text : p.kind === 'provided' || p.kind === 'required' ? 'no call yet' : 'no sample yet';
-  return [head, ops, last, `${p.count} ${unit}`].filter(Boolean);
+  const head = `${component}.${p.name} · ${kindWords(p.kind)} · ${p.interface}`;
+  const ops = p.operations?.length ? t('system.operations', { names: p.operations.join(', ') }) : null;
+  const service = p.kind === 'provided' || p.kind === 'required';
+  const last = p.last ? p.last.text : t(service ? 'system.no_call' : 'system.no_sample');
+  return [head, ops, last, t(service ? 'system.calls' : 'system.samples', { n: p.count })].filter(Boolean);
 }
 
 export function createSystemPanel(root, app) {
@@ -107,12 +109,12 @@ export function createSystemPanel(root, app) {
   const lineNodes = new Map();
   let components = [];
 
-  const request = (what, fn) => {
-    if (/^(Reset|Activate)/.test(what)) app.notice.endState();
+  const request = (what, fn, ends = false) => {
+    if (ends) app.notice.endState();
     const r = app.attempt(fn);
     if (!r.ok) {
-      app.notice.show(`${what} refused: ${r.error}`, 'error');
-      app.log.page(`${what} refused: ${r.error}`, 'warn');
+      app.notice.show(t('refused', { what, error: r.error }), 'error');
+      app.log.page(t('refused', { what, error: r.error }), 'warn');
     }
     app.emit('changed');
     last = -Infinity;
@@ -121,41 +123,39 @@ export function createSystemPanel(root, app) {
 
   // ------------------------------------------------------------------ the frame
 
-  const picture = svg('svg', { class: 'system-svg', role: 'img', 'aria-label': 'The RT-components, their ports and connections' });
+  const picture = svg('svg', { class: 'system-svg', role: 'img', 'aria-label': t('system.picture.aria') });
   const wrap = el('div', { class: 'system-wrap', id: 'system-diagram' }, picture);
   const tooltip = el('div', { class: 'system-tip', id: 'system-tip', role: 'tooltip', hidden: true });
   wrap.append(tooltip);
 
   const actTitle = el('span', { class: 'system-act-title' });
   const buttons = {
-    activate: el('button', { type: 'button', 'data-act': 'activate' }, 'Activate'),
-    deactivate: el('button', { type: 'button', class: 'secondary', 'data-act': 'deactivate' }, 'Deactivate'),
-    reset: el('button', { type: 'button', class: 'secondary', 'data-act': 'reset' }, 'Reset'),
-    fault: el('button', { type: 'button', class: 'danger', 'data-act': 'fault' }, 'Inject fault'),
+    activate: el('button', { type: 'button', 'data-act': 'activate' }, t('rtc.activate')),
+    deactivate: el('button', { type: 'button', class: 'secondary', 'data-act': 'deactivate' }, t('rtc.deactivate')),
+    reset: el('button', { type: 'button', class: 'secondary', 'data-act': 'reset' }, t('rtc.reset')),
+    fault: el('button', { type: 'button', class: 'danger', 'data-act': 'fault' }, t('rtc.fault')),
   };
   for (const [act, b] of Object.entries(buttons)) {
     b.addEventListener('click', () => {
       if (!selectedBox) return;
       const name = selectedBox;
-      if (act === 'fault') request(`Inject fault into ${name}`, () => demo.inject_fault(name));
-      else request(`${b.textContent} ${name}`, () => demo[act](name));
+      if (act === 'fault') request(t('rtc.fault.request', { name }), () => demo.inject_fault(name));
+      else request(t(`system.act.${act}`, { name }), () => demo[act](name), act === 'activate' || act === 'reset');
     });
   }
-  const actions = el('div', { class: 'system-actions', id: 'system-actions', role: 'group', 'aria-label': 'The selected component' },
+  const actions = el('div', { class: 'system-actions', id: 'system-actions', role: 'group', 'aria-label': t('system.actions.aria') },
     actTitle, el('span', { class: 'system-act-buttons' }, ...Object.values(buttons)));
 
   const details = el('div', { class: 'system-details', id: 'system-details', 'aria-live': 'polite' });
 
   root.append(
     el('div', { class: 'panel-head' },
-      el('h2', {}, 'System'),
+      el('h2', {}, t('system.title')),
       el('span', { class: 'legend' },
-        el('span', { class: 'swatch', style: '--c:#0000ff' }), 'Inactive',
-        el('span', { class: 'swatch', style: '--c:#00ff00' }), 'Active',
-        el('span', { class: 'swatch', style: '--c:#ff0000' }), 'Error')),
+        ...[['#0000ff', 'Inactive'], ['#00ff00', 'Active'], ['#ff0000', 'Error']].map(([c, state]) =>
+          el('span', { class: 'legend-item' }, el('span', { class: 'swatch', style: `--c:${c}` }), t(`state.${state}`))))),
     el('p', { class: 'panel-hint' },
-      'As RT System Editor shows it, from the core\'s own description. ■ data port, ● service port; '
-      + 'solid lines carry data, dashed ones service calls. Tap a box to act on it, a port for its last sample and its connections.'),
+      t('system.hint')),
     actions,
     wrap,
     details,
@@ -184,12 +184,12 @@ export function createSystemPanel(root, app) {
     const boxes = svg('g', { class: 'sys-boxes' });
     for (const [name, b] of geometry.boxes) {
       const g = svg('g', { class: `sys-box${b.c.rtc ? '' : ' gui'}`, 'data-component': name, tabindex: 0, role: 'button',
-        'aria-label': b.c.rtc ? `${b.c.instance_name}: select` : 'InventGUI' });
+        'aria-label': b.c.rtc ? t('system.box.aria', { name: b.c.instance_name }) : 'InventGUI' });
       const body = svg('rect', { x: b.x, y: b.y, width: BOX_W, height: b.h, rx: 5, class: 'sys-body' });
       const head = svg('rect', { x: b.x, y: b.y, width: BOX_W, height: HEAD_H, rx: 5, class: 'sys-head' });
       const title = svg('text', { x: b.x + 7, y: b.y + 15, class: 'sys-title' }, b.c.instance_name);
       const state = svg('text', { x: b.x + BOX_W - 7, y: b.y + 15, class: 'sys-state', 'text-anchor': 'end' }, b.c.state ?? '');
-      const status = svg('text', { x: b.x + 7, y: b.y + HEAD_H + 11, class: 'sys-status' }, b.c.rtc ? '' : 'the person: page, CLI, timeline');
+      const status = svg('text', { x: b.x + 7, y: b.y + HEAD_H + 11, class: 'sys-status' }, b.c.rtc ? '' : t('system.gui_status'));
       g.append(body, head, title, state, status);
       for (const p of [...b.left, ...b.right]) {
         const at = geometry.ports.get(portKey(name, p.name));
@@ -307,9 +307,9 @@ export function createSystemPanel(root, app) {
           el('span', { class: 'conn-name' }, e.id.replace('->', ' → ')),
           el('span', { class: 'conn-count' }));
         if (e.cuttable) {
-          const b = el('button', { type: 'button', class: e.cut ? 'restore' : 'cut danger' }, e.cut ? 'Restore' : 'Cut');
+          const b = el('button', { type: 'button', class: e.cut ? 'restore' : 'cut danger' }, t(e.cut ? 'system.restore' : 'system.cut'));
           b.addEventListener('click', () => {
-            const what = `${e.cut ? 'Restore' : 'Cut'} ${e.id.replace('->', ' → ')}`;
+            const what = t(e.cut ? 'system.restore.what' : 'system.cut.what', { id: e.id.replace('->', ' → ') });
             request(what, () => (e.cut ? demo.restore_connection(e.id) : demo.cut_connection(e.id)));
           });
           li.append(b);
@@ -320,14 +320,14 @@ export function createSystemPanel(root, app) {
         el('div', { class: 'system-port-head' }, lines[0]),
         el('div', { class: 'system-port-sample', id: 'system-sample' }),
         el('div', { class: 'system-port-count' }),
-        conns.length ? list : el('p', { class: 'panel-hint small' }, 'Not connected.'),
+        conns.length ? list : el('p', { class: 'panel-hint small' }, t('system.not_connected')),
       );
     }
     setText(details.querySelector('.system-port-sample'), lines.slice(1, -1).join(' · '));
     setText(details.querySelector('.system-port-count'), lines[lines.length - 1]);
     for (const li of details.querySelectorAll('.system-conns li')) {
       const e = graph.connections.find((x) => x.id === li.dataset.id);
-      if (e) setText(li.querySelector('.conn-count'), e.cut ? 'cut' : `${e.carried} ${e.kind === 'service' ? 'calls' : 'samples'}`);
+      if (e) setText(li.querySelector('.conn-count'), e.cut ? t('system.cut_state') : t(e.kind === 'service' ? 'system.calls' : 'system.samples', { n: e.carried }));
     }
   }
 
@@ -348,7 +348,7 @@ export function createSystemPanel(root, app) {
       node.state.style.fill = ink;
       if (c.state) setText(node.state, `${c.state} · ${c.rate_hz} Hz`);
       if (ci) {
-        const status = ci.state === 'Error' && ci.last_error ? ci.last_error : ci.status;
+        const status = ci.state === 'Error' && ci.last_error ? reasonText(ci.last_error) : componentStatus(ci.status);
         const short = status.length > 38 ? `${status.slice(0, 37)}…` : status;
         setText(node.status, short);
         node.status.dataset.full = status;
@@ -379,12 +379,12 @@ export function createSystemPanel(root, app) {
     // The selected box's actions, as RT System Editor's context menu.
     const ci = selectedBox ? info.get(selectedBox) : null;
     actions.dataset.component = selectedBox ?? '';
-    setText(actTitle, ci ? `${ci.instance_name} · ${ci.state}` : 'Tap a component to act on it');
+    setText(actTitle, ci ? `${ci.instance_name} · ${ci.state}` : t('system.act.none'));
     buttons.activate.disabled = !ci || ci.state !== 'Inactive';
     buttons.deactivate.disabled = !ci || ci.state !== 'Active';
     buttons.reset.disabled = !ci || ci.state !== 'Error';
     buttons.fault.disabled = !ci || !(ci.state === 'Inactive' || ci.state === 'Active') || ci.fault_pending;
-    setText(buttons.fault, ci?.fault_pending ? 'Fault pending…' : 'Inject fault');
+    setText(buttons.fault, t(ci?.fault_pending ? 'rtc.fault.pending' : 'rtc.fault'));
     paintDetails();
     if (hoverPort) {
       const at = geometry.ports.get(hoverPort);

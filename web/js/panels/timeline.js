@@ -11,6 +11,7 @@ import { Demo } from '../../pkg/rtnav_wasm.js';
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
 import { t, language } from '../i18n.js';
+import { errorText } from '../words.js';
 
 const POLL_MS = 200;
 
@@ -131,7 +132,7 @@ export function createTimeline(root, app) {
     try {
       name = app.guard.call(() => Demo.replay_scenario(text));
     } catch (e) {
-      return say(t('timeline.replay_refused', { error: e?.message ?? e }), 'error');
+      return say(t('timeline.replay_refused', { error: errorText(e) }), 'error');
     }
     if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name }), 'error');
     demo.set_paused(true);

@@ -17,7 +17,7 @@ const SPEEDS = [0.25, 0.5, 1, 2, 4, 8, 16];
 const BRUSHES = { cells: [1, 3, 5, 9], m: [0.25, 0.5, 1, 2] };
 const LAYER_NAMES = {
   occupancy: t('layer.occupancy'),
-  dmin_zone: 'dmin zone',
+  dmin_zone: t('layer.dmin_zone'),
   heat_map: t('layer.heat_map'),
   global_path: t('layer.global_path'),
   local_path: t('layer.local_path'),
