@@ -84,8 +84,8 @@ impl Prefetch {
         })();
         match &child {
             Ok(c) => println!(
-                "xtask: fetching Chromium, npm packages and wasm-opt in the background \
-                 (process {}, log {})",
+                "xtask: installing what is missing of Chromium, the npm packages, wasm-opt and \
+                 wasm-bindgen-cli in the background (process {}, log {})",
                 c.id(),
                 log.display()
             ),
@@ -102,11 +102,19 @@ impl Prefetch {
         let Some(mut child) = self.child.take() else {
             return;
         };
-        let status = child.wait();
+        let status = match child.wait() {
+            Ok(s) if s.success() => "done".to_owned(),
+            Ok(s) => format!("failed ({s}); the stages install what is missing"),
+            Err(e) => format!("not waited for ({e})"),
+        };
         let text = std::fs::read_to_string(&self.log).unwrap_or_default();
-        println!("xtask: background fetch ended ({status:?}); its output:");
-        for line in text.lines() {
-            println!("  | {line}");
+        if text.trim().is_empty() {
+            println!("xtask: background installs {status}: nothing was missing");
+        } else {
+            println!("xtask: background installs {status}; their output:");
+            for line in text.lines() {
+                println!("  | {line}");
+            }
         }
     }
 }
