@@ -13,8 +13,7 @@ import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import {
   REPO, DATA, DATA_MISSING, WAIT, COLOURS, launch, openPage, screenshot, plan, telemetry, mapInfo,
-  cellToPage, expectState, activateAll, logged,
-} from './helpers.mjs';
+  cellToPage, expectState, activateAll, logged, solidObstacleCell } from './helpers.mjs';
 
 /** The frame budget of one frame (simulation + render + blit), ms. */
 const BUDGET_MS = 8;
@@ -128,18 +127,7 @@ test('a goal dropped inside an obstacle is refused; the previous goal and path s
   const { page, problems } = await open();
   const before = await plan(page);
   // An obstacle cell whose neighbours are obstacles too (inside the shed).
-  const cell = await page.evaluate(() => {
-    const { demo } = window.rtnav;
-    const m = JSON.parse(demo.map_json());
-    for (let y = 2; y < m.height - 2; y++) {
-      for (let x = 2; x < m.width - 2; x++) {
-        let solid = true;
-        for (let dy = -2; dy <= 2 && solid; dy++) for (let dx = -2; dx <= 2 && solid; dx++) solid = demo.cell(x + dx, y + dy) === 1;
-        if (solid) return [x, y];
-      }
-    }
-    return null;
-  });
+  const cell = await solidObstacleCell(page, 2);
   assert.ok(cell, 'the map has a solid obstacle');
   await page.click('#tool-goal');
   const [x, y] = await cellToPage(page, cell);

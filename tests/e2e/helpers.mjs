@@ -252,3 +252,24 @@ export function layoutProblems() {
   home();
   return problems;
 }
+
+/**
+ * A cell of the page's map inside an obstacle: it and every cell within `margin` cells of it
+ * are obstacles (null if the map has none).
+ */
+export function solidObstacleCell(page, margin = 1) {
+  return page.evaluate((margin) => {
+    const { demo } = window.rtnav;
+    const m = JSON.parse(demo.map_json());
+    for (let y = margin + 1; y < m.height - margin - 1; y++) {
+      for (let x = margin + 1; x < m.width - margin - 1; x++) {
+        let solid = true;
+        for (let dy = -margin; dy <= margin && solid; dy++) {
+          for (let dx = -margin; dx <= margin && solid; dx++) solid = demo.cell(x + dx, y + dy) === 1;
+        }
+        if (solid) return [x, y];
+      }
+    }
+    return null;
+  }, margin);
+}

@@ -10,7 +10,7 @@
 // Japanese go to docs/ (UPDATE_SCREENSHOTS=1).
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { WAIT, launch, openPage, screenshot, showTab, frames, layoutProblems, telemetry, mapInfo, cellToPage } from './helpers.mjs';
+import { WAIT, launch, openPage, screenshot, showTab, frames, layoutProblems, telemetry, mapInfo, cellToPage, solidObstacleCell } from './helpers.mjs';
 
 const browsers = [];
 after(async () => {
@@ -148,18 +148,7 @@ const englishMismatches = (page) => page.evaluate(async () => {
 
 /** A goal dropped inside an obstacle, through the goal tool: refused. */
 async function refusedGoal(page) {
-  const cell = await page.evaluate(() => {
-    const { demo } = window.rtnav;
-    const m = JSON.parse(demo.map_json());
-    for (let y = 2; y < m.height - 2; y++) {
-      for (let x = 2; x < m.width - 2; x++) {
-        let solid = true;
-        for (let dy = -1; dy <= 1 && solid; dy++) for (let dx = -1; dx <= 1 && solid; dx++) solid = demo.cell(x + dx, y + dy) === 1;
-        if (solid) return [x, y];
-      }
-    }
-    return null;
-  });
+  const cell = await solidObstacleCell(page, 1);
   assert.ok(cell, 'the map has a solid obstacle');
   await page.click('#tool-goal');
   await page.$eval('#overlay', (c) => c.scrollIntoView({ block: 'center' }));
