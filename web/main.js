@@ -67,6 +67,20 @@ async function boot() {
         return { ok: false, error: errorText(e), message: e?.message ?? String(e) };
       }
     },
+    /**
+     * A lifecycle request of a button (`what` names it): a refusal goes to the notice and the
+     * log; Reset and Activate (`endsNotices`) end the notices of the states they leave.
+     */
+    request(what, fn, endsNotices = false) {
+      if (endsNotices) app.notice.endState();
+      const r = app.attempt(fn);
+      if (!r.ok) {
+        app.notice.show(t('refused', { what, error: r.error }), 'error');
+        app.log.page(t('refused', { what, error: r.error }), 'warn');
+      }
+      app.emit('changed');
+      return r;
+    },
   };
   app.notice = createNotice($('notice'), $('notice-text'), $('notice-close'));
   app.log = createEventLog($('log-panel'), app);

@@ -59,11 +59,6 @@ impl EscapeLead {
         (from_exit, lead)
     }
 
-    /// Escape steps (0: the robot stood clear).
-    pub fn steps(&self) -> usize {
-        self.cells.len()
-    }
-
     /// `plan` (made from the request [`EscapeLead::of`] gave) with the lead before its paths
     /// and control points made from the whole path; and the number of escape steps.
     pub fn apply(&self, map: &GridMap, mut plan: LocalPlan) -> (LocalPlan, usize) {

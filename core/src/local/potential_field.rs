@@ -372,11 +372,6 @@ impl PotentialField {
         }
     }
 
-    /// Whether a computation is unfinished ([`PotentialField::compute_within`]).
-    pub fn is_growing(&self) -> bool {
-        self.growing.is_some()
-    }
-
     /// Clears what the last computation reached and brings the impassable marks and
     /// squared distances up to date with `map` and the request's `dmin`.
     fn reset(&mut self, map: &GridMap, request: &FieldRequest) {

@@ -27,17 +27,7 @@ function paint(badge, state, colour) {
 export function createRtcPanel(root, app) {
   const { demo } = app;
 
-  const request = (what, fn, ends = false) => {
-    // A request that leaves a state (Reset, Activate) ends the notices about it.
-    if (ends) app.notice.endState();
-    const r = app.attempt(fn);
-    if (!r.ok) {
-      app.notice.show(t('refused', { what, error: r.error }), 'error');
-      app.log.page(t('refused', { what, error: r.error }), 'warn');
-    }
-    app.emit('changed');
-    return r;
-  };
+  const request = app.request;
 
   const list = el('ol', { class: 'rtc-list', id: 'components' });
   const rows = new Map();

@@ -110,13 +110,7 @@ export function createSystemPanel(root, app) {
   let components = [];
 
   const request = (what, fn, ends = false) => {
-    if (ends) app.notice.endState();
-    const r = app.attempt(fn);
-    if (!r.ok) {
-      app.notice.show(t('refused', { what, error: r.error }), 'error');
-      app.log.page(t('refused', { what, error: r.error }), 'warn');
-    }
-    app.emit('changed');
+    const r = app.request(what, fn, ends);
     last = -Infinity;
     return r;
   };

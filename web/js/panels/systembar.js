@@ -10,17 +10,7 @@ const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
 export function createSystemBar(root, app) {
   const { demo } = app;
 
-  /** A request on all components; a refusal is shown. Reset and Activate end the notices of the states they leave. */
-  const request = (what, fn, endsNotices) => {
-    if (endsNotices) app.notice.endState();
-    const r = app.attempt(fn);
-    if (!r.ok) {
-      app.notice.show(t('refused', { what, error: r.error }), 'error');
-      app.log.page(t('refused', { what, error: r.error }), 'warn');
-    }
-    app.emit('changed');
-    return r;
-  };
+  const request = app.request;
 
   const badge = el('span', { id: 'system-state', class: 'state-badge', title: t('system.badge.title') });
   const buttons = {
