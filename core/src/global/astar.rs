@@ -16,6 +16,12 @@
 //!   jump points of equal length, so the result stays optimal (checked against every
 //!   MovingAI problem and against Dijkstra on random maps); the cells between jump points
 //!   are straight runs and are filled in when the path is read back.
+//! - **Pruning**: a jump point is expanded only in the directions an optimal path may need
+//!   from it: after a diagonal move, that diagonal and its two straight components; after a
+//!   straight move, straight ahead, and a side (with the diagonal between ahead and that
+//!   side) only where it is *forced* — the cell behind the side, beside the cell the move
+//!   came from, is blocked. Where that cell is passable, the side cell and the diagonal
+//!   ahead of it are reached at least as cheaply without the jump point.
 //! - **Heuristic**: the octile distance, admissible and consistent (also along jumps), so a
 //!   cell is expanded at most once and the goal's cost is optimal when it is taken.
 //! - **Ties** (spec §6): equal `f = g + h` leave the queue in an order fixed by the order

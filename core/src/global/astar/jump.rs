@@ -251,14 +251,24 @@ impl Search<'_> {
                     let (a, b) = (k - 4, (k - 3) % 4);
                     all & ((1 << a) | (1 << b) | (1 << k))
                 } else {
-                    // Straight k: ahead, the two sides, and the two diagonals between ahead
-                    // and a side (the diagonal between orthogonals j and j + 1 is 4 + j).
+                    // Straight k: ahead, and each side that is forced — the cell behind it
+                    // (beside the cell p was entered from) blocked — with the diagonal
+                    // between ahead and that side (the diagonal between orthogonals j and
+                    // j + 1 is 4 + j). Where the cell behind a side is passable, the side
+                    // and the diagonal ahead of it are reached as cheaply without p.
                     let (left, right) = ((k + 1) % 4, (k + 3) % 4);
-                    all & ((1 << k)
-                        | (1 << left)
-                        | (1 << right)
-                        | (1 << (4 + k))
-                        | (1 << (4 + right)))
+                    let behind = p.wrapping_add_signed(-offsets[k]);
+                    let forced = |side: usize| {
+                        self.cells[behind.wrapping_add_signed(offsets[side])] & PASSABLE == 0
+                    };
+                    let mut keep = 1 << k;
+                    if forced(left) {
+                        keep |= (1 << left) | (1 << (4 + k));
+                    }
+                    if forced(right) {
+                        keep |= (1 << right) | (1 << (4 + right));
+                    }
+                    all & keep
                 }
             };
             while moves != 0 {
