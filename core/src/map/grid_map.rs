@@ -3,6 +3,7 @@
 
 use std::collections::VecDeque;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, PoisonError, Weak};
 
 use super::distance::DistanceField;
 use super::{MapError, MapUpdate};
@@ -72,22 +73,66 @@ const CHANGES_KEPT: usize = 64;
 /// An occupancy grid. A `GridMap` that exists is valid (spec §2 Decision): dimensions ≥ 1,
 /// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
 /// 0 (free) or 1 (obstacle).
+///
+/// **Copies share** (spec §5: every component keeps its own map, so one `MapUpdate` reaches
+/// five copies): the cells and distances are held behind an [`Arc`] and copied only when a
+/// copy changes, and a `MapUpdate` applied to shared cells leaves its result with them, so
+/// the next copy that gets the same update takes that result instead of computing the
+/// distances again. Each copy still changes only when it is told to; the result is the same
+/// value either way.
 pub struct GridMap {
     width: usize,
     height: usize,
     grid_size: f64,
     origin: (f64, f64),
+    content: Arc<Content>,
+    version: Time,
+    /// This value's id (see [`MapStamp`]).
+    id: u64,
+}
+
+/// What a `MapUpdate` changes: the cells, their distances and the change log.
+#[derive(Debug)]
+struct Content {
     /// 0 free, 1 obstacle; `x + y * width`.
     cells: Vec<u8>,
     /// Obstacle distances (metres, 0 on obstacle cells), kept current by every change.
     field: DistanceField,
-    version: Time,
-    /// This value's id (see [`MapStamp`]).
-    id: u64,
     /// Counts the `MapUpdate`s that changed a distance.
     revision: u64,
     /// The last [`CHANGES_KEPT`] revisions: where the distances changed.
     changes: VecDeque<(u64, CellRect)>,
+    /// The content a `MapUpdate` made from this one (its cells and values, the number of
+    /// cells it changed, the result), for the other copies that get the same update; held
+    /// weakly, so a copy left behind (a snapshot) does not keep later maps alive.
+    next: Mutex<Option<Successor>>,
+}
+
+#[derive(Debug)]
+struct Successor {
+    x: Vec<i32>,
+    y: Vec<i32>,
+    value: Vec<i16>,
+    changed: usize,
+    content: Weak<Content>,
+}
+
+impl Content {
+    /// The result a `MapUpdate` left here (one thread at a time; a panic while it was held
+    /// left it whole: it is only ever replaced).
+    fn successor(&self) -> std::sync::MutexGuard<'_, Option<Successor>> {
+        self.next.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    fn new(cells: Vec<u8>, field: DistanceField) -> Self {
+        Self {
+            cells,
+            field,
+            revision: 0,
+            changes: VecDeque::new(),
+            next: Mutex::new(None),
+        }
+    }
 }
 
 impl core::fmt::Debug for GridMap {
@@ -99,29 +144,27 @@ impl core::fmt::Debug for GridMap {
             .field("height", &self.height)
             .field("grid_size", &self.grid_size)
             .field("origin", &self.origin)
-            .field("cells", &self.cells)
-            .field("field", &self.field)
+            .field("cells", &self.content.cells)
+            .field("field", &self.content.field)
             .field("version", &self.version)
-            .field("revision", &self.revision)
-            .field("changes", &self.changes)
+            .field("revision", &self.content.revision)
+            .field("changes", &self.content.changes)
             .finish_non_exhaustive()
     }
 }
 
 impl Clone for GridMap {
-    /// A copy with its own id: its distances may change apart from the original's.
+    /// A copy with its own id: its distances may change apart from the original's. The
+    /// cells and distances are shared until one of the two changes.
     fn clone(&self) -> Self {
         Self {
             width: self.width,
             height: self.height,
             grid_size: self.grid_size,
             origin: self.origin,
-            cells: self.cells.clone(),
-            field: self.field.clone(),
+            content: Arc::clone(&self.content),
             version: self.version,
             id: fresh_id(),
-            revision: self.revision,
-            changes: self.changes.clone(),
         }
     }
 }
@@ -134,8 +177,9 @@ impl PartialEq for GridMap {
             && self.grid_size == other.grid_size
             && self.origin == other.origin
             && self.version == other.version
-            && self.cells == other.cells
-            && self.field == other.field
+            && (Arc::ptr_eq(&self.content, &other.content)
+                || (self.content.cells == other.content.cells
+                    && self.content.field == other.content.field))
     }
 }
 
@@ -179,12 +223,9 @@ impl GridMap {
             height,
             grid_size,
             origin,
-            cells,
-            field,
+            content: Arc::new(Content::new(cells, field)),
             version: Time::default(),
             id: fresh_id(),
-            revision: 0,
-            changes: VecDeque::new(),
         })
     }
 
@@ -300,21 +341,21 @@ impl GridMap {
 
     /// The cells, x fastest, 0 free / 1 obstacle.
     pub fn cells(&self) -> &[u8] {
-        &self.cells
+        &self.content.cells
     }
 
     /// Obstacle distances in metres, x fastest (spec §2): from each cell's centre to the
     /// nearest obstacle cell's centre, cells outside the map counting as obstacles; 0 on an
     /// obstacle cell.
     pub fn distances(&self) -> &[f64] {
-        self.field.distances()
+        self.content.field.distances()
     }
 
     /// The current [`MapStamp`].
     pub(crate) fn stamp(&self) -> MapStamp {
         MapStamp {
             id: self.id,
-            revision: self.revision,
+            revision: self.content.revision,
         }
     }
 
@@ -325,15 +366,17 @@ impl GridMap {
         &self,
         since: MapStamp,
     ) -> Option<impl Iterator<Item = CellRect> + '_> {
-        if since.id != self.id || since.revision > self.revision {
+        let content = &*self.content;
+        if since.id != self.id || since.revision > content.revision {
             return None;
         }
-        let missing = self.revision - since.revision;
-        if missing as usize > self.changes.len() {
+        let missing = content.revision - since.revision;
+        if missing as usize > content.changes.len() {
             return None;
         }
         Some(
-            self.changes
+            content
+                .changes
                 .iter()
                 .filter(move |(r, _)| *r > since.revision)
                 .map(|&(_, rect)| rect),
@@ -353,14 +396,14 @@ impl GridMap {
 
     /// Whether `(x, y)` is an obstacle; outside the map counts as obstacle (spec §2).
     pub fn is_obstacle(&self, x: i64, y: i64) -> bool {
-        !self.contains(x, y) || self.cells[x as usize + y as usize * self.width] == 1
+        !self.contains(x, y) || self.content.cells[x as usize + y as usize * self.width] == 1
     }
 
     /// Obstacle distance of a cell, metres (spec §2): 0 on an obstacle cell, and 0 for a
     /// cell outside the map, which counts as obstacle.
     pub fn obstacle_distance(&self, (x, y): Cell) -> f64 {
         if x < self.width && y < self.height {
-            self.field.distances()[x + y * self.width]
+            self.content.field.distances()[x + y * self.width]
         } else {
             0.0
         }
@@ -406,32 +449,79 @@ impl GridMap {
     /// value changed; the timestamp becomes the map's version.
     pub fn map_update(&mut self, update: &MapUpdate) -> Result<usize, MapError> {
         update.check(self)?;
-        let (x, y, value, tm) = (&update.x, &update.y, &update.value, update.tm);
-        // Validated: apply. A cell listed twice takes its last value, as if the entries were
-        // applied one after the other; only cells whose value differs afterwards count.
+        self.version = update.tm;
+        let same = |n: &Successor| n.x == update.x && n.y == update.y && n.value == update.value;
+        // Another copy got this update on these cells before: its result.
+        let taken = self
+            .content
+            .successor()
+            .as_ref()
+            .filter(|n| same(n))
+            .and_then(|n| Some((n.content.upgrade()?, n.changed)));
+        if let Some((content, changed)) = taken {
+            self.content = content;
+            return Ok(changed);
+        }
+        // Nobody else holds these cells: change them in place (a result left for copies
+        // that are gone is dropped).
+        if let Some(content) = Arc::get_mut(&mut self.content) {
+            *content
+                .next
+                .get_mut()
+                .unwrap_or_else(PoisonError::into_inner) = None;
+            return Ok(content.apply(update, self.width, self.height));
+        }
+        // Shared: a changed copy, left with the shared cells for the other copies.
+        let mut content = Content {
+            cells: self.content.cells.clone(),
+            field: self.content.field.clone(),
+            revision: self.content.revision,
+            changes: self.content.changes.clone(),
+            next: Mutex::new(None),
+        };
+        let changed = content.apply(update, self.width, self.height);
+        let content = Arc::new(content);
+        *self.content.successor() = Some(Successor {
+            x: update.x.clone(),
+            y: update.y.clone(),
+            value: update.value.clone(),
+            changed,
+            content: Arc::downgrade(&content),
+        });
+        self.content = content;
+        Ok(changed)
+    }
+}
+
+impl Content {
+    /// Applies a checked `update` to these cells of a `width × height` map: the number of
+    /// cells whose value changed.
+    fn apply(&mut self, update: &MapUpdate, width: usize, height: usize) -> usize {
+        let (x, y, value) = (&update.x, &update.y, &update.value);
+        // A cell listed twice takes its last value, as if the entries were applied one
+        // after the other; only cells whose value differs afterwards count.
         let mut listed: Vec<(usize, u8)> = x
             .iter()
             .zip(y)
             .map(|(&cx, &cy)| {
-                let idx = cx as usize + cy as usize * self.width;
+                let idx = cx as usize + cy as usize * width;
                 (idx, self.cells[idx])
             })
             .collect();
         listed.sort_unstable();
         listed.dedup_by_key(|e| e.0);
         for i in 0..x.len() {
-            self.cells[x[i] as usize + y[i] as usize * self.width] = value[i] as u8;
+            self.cells[x[i] as usize + y[i] as usize * width] = value[i] as u8;
         }
         let changed: Vec<usize> = listed
             .iter()
             .filter(|&&(idx, before)| self.cells[idx] != before)
             .map(|&(idx, _)| idx)
             .collect();
-        self.version = tm;
         if !changed.is_empty()
-            && let Some(rect) =
-                self.field
-                    .update_cells(&self.cells, self.width, self.height, &changed)
+            && let Some(rect) = self
+                .field
+                .update_cells(&self.cells, width, height, &changed)
         {
             self.revision += 1;
             if self.changes.len() == CHANGES_KEPT {
@@ -439,7 +529,7 @@ impl GridMap {
             }
             self.changes.push_back((self.revision, rect));
         }
-        Ok(changed.len())
+        changed.len()
     }
 }
 
@@ -544,5 +634,71 @@ mod tests {
         assert_eq!(m.version(), tm);
         assert!(m.is_obstacle(1, 0));
         assert_eq!(m.obstacle_distance((0, 1)), 1.0);
+    }
+
+    /// Copies share their cells; the same update on each copy is computed once and gives
+    /// each the same map as on its own; another update, or one on a lone map, changes only
+    /// that map.
+    #[test]
+    fn copies_share_cells_and_one_update_is_computed_once() {
+        let mut cells = vec![0u8; 40 * 30];
+        cells[5 + 7 * 40] = 1;
+        let original = GridMap::new(40, 30, 0.1, (0.0, 0.0), cells).unwrap();
+        let mut copies: Vec<GridMap> = (0..4).map(|_| original.clone()).collect();
+        assert!(
+            copies
+                .iter()
+                .all(|c| Arc::ptr_eq(&c.content, &original.content))
+        );
+        let brush = MapUpdate::from_cells(
+            &[(20, 15, 1), (21, 15, 1), (21, 16, 1), (5, 7, 0)],
+            Time::from_nanos(7),
+        );
+        let mut alone = original.clone();
+        alone.content = Arc::new(Content {
+            cells: original.content.cells.clone(),
+            field: original.content.field.clone(),
+            revision: 0,
+            changes: VecDeque::new(),
+            next: Mutex::new(None),
+        });
+        let stamp = alone.stamp();
+        assert_eq!(alone.map_update(&brush), Ok(4));
+        for c in &mut copies {
+            assert_eq!(c.map_update(&brush), Ok(4));
+            assert_eq!(*c, alone);
+            assert_eq!(c.content.revision, 1);
+        }
+        assert!(
+            copies
+                .iter()
+                .all(|c| Arc::ptr_eq(&c.content, &copies[0].content))
+        );
+        // The original was not told: unchanged.
+        assert!(!original.is_obstacle(20, 15) && original.is_obstacle(5, 7));
+        assert_eq!(
+            alone.distance_changes_since(stamp).map(Iterator::count),
+            Some(1)
+        );
+        // Another update on one copy parts it from the others.
+        let other = MapUpdate::from_cells(&[(30, 3, 1)], Time::from_nanos(8));
+        assert_eq!(copies[1].map_update(&other), Ok(1));
+        assert!(copies[1].is_obstacle(30, 3) && !copies[0].is_obstacle(30, 3));
+        assert!(!Arc::ptr_eq(&copies[0].content, &copies[1].content));
+        // The same update again changes nothing, shared or not.
+        assert_eq!(copies[0].map_update(&brush), Ok(0));
+        assert_eq!(copies[0], copies[2].clone());
+        // A copy left behind (the original) keeps nothing that came after it alive.
+        let second = MapUpdate::from_cells(&[(2, 2, 1)], Time::from_nanos(9));
+        for c in &mut copies {
+            assert_eq!(c.map_update(&second), Ok(1));
+        }
+        assert!(
+            original
+                .content
+                .successor()
+                .as_ref()
+                .is_some_and(|n| n.content.upgrade().is_none())
+        );
     }
 }
