@@ -77,8 +77,10 @@ test('(3) at 1280×800, 768×1024 and 390×844 nothing is off-screen, cut off or
       const found = await page.evaluate(layoutProblems);
       assert.deepEqual(found, [], `${width}×${height}, tab ${tab}`);
     }
-    // The Layers menu open, too.
+    // The Layers menu open, too (placed by its `toggle` event, which comes as a task of its
+    // own after the click).
     await page.click('#layers summary');
+    await frames(page, 2);
     assert.deepEqual(await page.evaluate(() => {
       const r = document.querySelector('#layers .menu-body').getBoundingClientRect();
       return r.left >= 0 && r.right <= document.documentElement.clientWidth;
