@@ -318,6 +318,25 @@ fn an_exported_conf_reimported_gives_the_same_configuration() {
     assert_eq!(s.parameters_view(), original);
 }
 
+/// A frame whose budget is spent before it begins (the page after a long request) runs no
+/// tick; the time stays owed and runs in the next frame.
+#[test]
+fn a_spent_budget_runs_no_tick_and_keeps_the_time_owed() {
+    let mut s = loaded("open_field");
+    s.apply(&Input::ActivateAll).unwrap();
+    let before = s.system().time_ns();
+    assert_eq!(s.advance_while(16.0, || false), 0);
+    assert_eq!(s.system().time_ns(), before);
+    assert!(
+        (s.behind_s() - 0.016).abs() < 1e-9,
+        "{} s owed",
+        s.behind_s()
+    );
+    assert_eq!(s.advance(0.0), 16);
+    assert_eq!(s.system().time_ns(), before + 16_000_000);
+    assert!(s.behind_s() < 1e-9);
+}
+
 #[test]
 fn a_frame_budget_cuts_the_time_but_not_the_trace() {
     const UNTIL_S: f64 = 3.0;

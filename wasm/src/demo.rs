@@ -147,7 +147,7 @@ impl Inner {
         self.step_while(elapsed_ms, || true)
     }
 
-    /// [`step`](Self::step), asking `more()` after each tick ([`Session::advance_while`]).
+    /// [`step`](Self::step), asking `more()` before each tick ([`Session::advance_while`]).
     pub(crate) fn step_while(&mut self, elapsed_ms: f64, more: impl FnMut() -> bool) -> u32 {
         let ticks = self.session.advance_while(elapsed_ms, more);
         if ticks > 0 {
@@ -487,7 +487,7 @@ impl Demo {
     /// [`step`](Self::step) within `budget_ms` of wall time (`performance.now()`): the ticks
     /// not run stay owed to the next frame, so an expensive tick (a plan on a large map) does
     /// not freeze the page for the rest of the frame's simulated time
-    /// ([`Session::advance_while`]). Returns the number of ticks run.
+    /// ([`Session::advance_while`]); a budget ≤ 0 runs none. Returns the number of ticks run.
     pub fn step_within(&mut self, elapsed_ms: f64, budget_ms: f64) -> u32 {
         let start = performance_now();
         self.0

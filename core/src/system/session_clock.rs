@@ -14,7 +14,9 @@ impl Session {
     }
 
     /// [`advance`](Self::advance) within a budget: the time owed runs tick by tick while
-    /// `more()` says so (asked after each tick; at least one tick runs when one is owed).
+    /// `more()` says so (asked before each tick: a caller whose budget is already spent —
+    /// the page after a request that took the frame's time — runs none, and the time stays
+    /// owed).
     /// What does not run stays owed for the next call, up to [`MAX_STEP_MS`] of wall time
     /// × the speed: a machine too slow for the speed runs slower instead of falling ever
     /// further behind. The ticks are the same ones, whichever calls run them, so the trace
@@ -33,16 +35,13 @@ impl Session {
         self.clock.pending_ns = owed.min(owed_max);
         let base = self.system.wiring().execution_context().base_period_ns();
         let mut ran = 0;
-        while self.clock.pending_ns >= base {
+        while self.clock.pending_ns >= base && more() {
             // One tick (more if a replayed request plans past it), through the history.
             let before = self.system.time_ns();
             self.run_to(before.saturating_add(base));
             let done = self.system.time_ns().saturating_sub(before).max(base);
             self.clock.pending_ns = self.clock.pending_ns.saturating_sub(done);
             ran += done / base;
-            if !more() {
-                break;
-            }
         }
         self.look();
         ran
