@@ -48,13 +48,13 @@ pub fn run_steps() -> Result {
 /// unless its `node_modules` already holds what the lockfile says.
 pub fn e2e_packages() -> Result {
     tools::ensure_node()?;
-    let dir = tools::repo_root().join("tests").join("e2e");
+    let dir = crate::test::e2e_dir();
     if tools::npm_installed(&dir) {
         return Ok(());
     }
     run(cmd("npm")
         .args(["ci", "--no-audit", "--no-fund"])
-        .current_dir(tools::repo_root().join("tests").join("e2e"))
+        .current_dir(&dir)
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"))
 }
 

@@ -184,7 +184,7 @@ fn page() -> Result<Option<String>> {
     Ok(Some(built.to_string()))
 }
 
-fn e2e_dir() -> PathBuf {
+pub(crate) fn e2e_dir() -> PathBuf {
     tools::repo_root().join("tests").join("e2e")
 }
 

@@ -120,8 +120,9 @@ pub fn ensure_wasm_target() -> Result {
 }
 
 /// `cargo install` of `krate` at exactly `version`, with `options`, unless `binary --version`
-/// already says `version`. `--locked` first; if the registry lacks a version the published lockfile names
-/// (a mirror can), once more without it: the crate's own version stays exact either way.
+/// already says `version`. `--locked` first; if the registry lacks a version the published
+/// lockfile names (a mirror can), once more without it: the crate's own version stays exact
+/// either way.
 fn ensure_cargo_tool(binary: &str, krate: &str, version: &str, options: &[&str]) -> Result {
     let have = output_of(binary, &["--version"]);
     if have

@@ -1,26 +1,11 @@
 //! A local plan that starts inside the `dmin` zone (spec §3 Decision 0.2, escape from the
 //! margin): the shortest way out ([`escape_route`]), then the plan of seed 000 from the first
-//! clear cell.
+//! clear cell ([`EscapeLead::of`] the request to plan, [`EscapeLead::apply`] to its plan).
 
-use super::LocalPathError;
 use super::control_points::control_points;
-use super::planner::{LocalPlan, LocalPlanner, PlanRequest};
+use super::planner::{LocalPlan, PlanRequest};
 use crate::interfaces::Pose;
 use crate::map::{Cell, GridMap, escape_route};
-
-/// [`LocalPlanner::plan`] for `request`, escaping first if the current cell lies within
-/// `dmin` of an obstacle without being one: the local and merged paths start with the escape
-/// cells, the control points are made from the whole path, and the second value is the
-/// number of escape steps (0 when the robot stood clear).
-pub fn plan_escaping(
-    planner: &mut LocalPlanner,
-    map: &GridMap,
-    request: &PlanRequest<'_>,
-) -> Result<(LocalPlan, usize), LocalPathError> {
-    let (from_exit, lead) = EscapeLead::of(map, request);
-    let plan = planner.plan(map, &from_exit)?;
-    Ok(lead.apply(map, plan))
-}
 
 /// The way out of the `dmin` zone a plan begins with: the cells before the first clear one
 /// (none when the robot stands clear), and the pose the plan was asked for.

@@ -23,7 +23,7 @@ pub mod reference;
 
 pub use checks::{clear_cell, course_cells};
 pub use control_points::{control_points, corner_cells, thin_collinear};
-pub use escape::{EscapeLead, plan_escaping};
+pub use escape::EscapeLead;
 pub use local_path::descend;
 pub use local_target::{
     LocalTarget, find_local_target, nearest_path_index, step_length, wrap_angle,

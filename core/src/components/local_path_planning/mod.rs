@@ -55,15 +55,14 @@ mod params;
 mod planning;
 pub use params::{LocalPathFlags, LocalPathPlanningParams};
 pub use planning::FIELD_CELLS_PER_EXECUTION;
-use planning::Unfinished;
 
 use crate::errors::LocalPathError;
 use crate::interfaces::{
     ControlPoints, Direction, GlobalPathCourse, GridPath, PlanningFailure, Pose,
 };
 use crate::local::{
-    FieldExtent, LocalPlan, LocalPlanner, LocalTarget, PlanParams, PotentialField, clear_cell,
-    control_points, course_cells, nearest_path_index,
+    EscapeLead, FieldExtent, LocalPlan, LocalPlanner, LocalTarget, PlanParams, PotentialField,
+    clear_cell, control_points, course_cells, nearest_path_index,
 };
 use crate::map::{Cell, GridMap, MapUpdate};
 use crate::rtc::{
@@ -128,8 +127,9 @@ pub struct LocalPathPlanning {
     planned_with: Option<PlanParams>,
     /// Steps of the last plan that lead out of the `dmin` zone.
     escaped: usize,
-    /// A plan begun and not finished (its field grows over executions).
-    unfinished: Option<Unfinished>,
+    /// A plan begun and not finished (its field grows over executions in the planner): the
+    /// way out of the `dmin` zone to put before it.
+    unfinished: Option<EscapeLead>,
 }
 
 const PLANNER: &str = "LocalPathPlanning";

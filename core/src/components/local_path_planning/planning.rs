@@ -16,14 +16,6 @@ use crate::rtc::Tick;
 /// 0.03 m cells take nine.
 pub const FIELD_CELLS_PER_EXECUTION: usize = 1 << 16;
 
-/// A plan whose field takes more than one execution: the escape lead to put before it, and
-/// when it was begun.
-#[derive(Debug, Clone)]
-pub(super) struct Unfinished {
-    lead: EscapeLead,
-    begun_ns: u64,
-}
-
 impl LocalPathPlanning {
     /// Spec §3 steps 3–8, after escaping the `dmin` zone if the robot stands in it.
     pub(super) fn replan(&mut self, tick: &Tick, params: &LocalPathPlanningParams) {
@@ -49,44 +41,42 @@ impl LocalPathPlanning {
             .planner
             .begin(map, &from_exit, FIELD_CELLS_PER_EXECUTION);
         self.field_valid = self.planner.field_is_fresh();
-        let unfinished = Unfinished {
-            lead,
-            begun_ns: tick.time_ns,
-        };
-        self.conclude(tick, progress, unfinished);
+        self.conclude(tick, progress, lead, false);
     }
 
     /// Spec §3 Decision 0.2: the next part of a plan's field; the plan once it is done.
     pub(super) fn go_on(&mut self, tick: &Tick) {
-        let (Some(unfinished), Some(map)) = (self.unfinished.take(), self.map.as_ref()) else {
+        let (Some(lead), Some(map)) = (self.unfinished.take(), self.map.as_ref()) else {
             return;
         };
         let progress = self
             .planner
             .resume(map, &self.held_path, FIELD_CELLS_PER_EXECUTION);
-        self.conclude(tick, progress, unfinished);
+        self.conclude(tick, progress, lead, true);
     }
 
-    /// Sends a plan that is done (from where the robot is now, if it moved since the plan
-    /// was begun), or the failure; or keeps the unfinished plan for the next execution.
+    /// Sends a plan that is done (from where the robot is now, if it was begun in an earlier
+    /// execution: `late`), or the failure; or keeps the unfinished plan's escape lead for the
+    /// next execution.
     fn conclude(
         &mut self,
         tick: &Tick,
         progress: Result<Progress, LocalPathError>,
-        unfinished: Unfinished,
+        lead: EscapeLead,
+        late: bool,
     ) {
         match progress {
             Ok(Progress::Continuing) => {
-                self.unfinished = Some(unfinished);
+                self.unfinished = Some(lead);
             }
             Ok(Progress::Done(plan)) => {
                 let Some(map) = self.map.as_ref() else {
                     return;
                 };
-                let (plan, escaped) = unfinished.lead.apply(map, plan);
+                let (plan, escaped) = lead.apply(map, plan);
                 let (mut cells, mut points) =
                     (plan.merged_path.clone(), plan.control_points.clone());
-                if tick.time_ns != unfinished.begun_ns
+                if late
                     && let (Some(cur), Some(goal)) = (self.current, self.goal)
                     && let Some(m) = nearest_path_index(map, &cells, 0, (cur.x, cur.y))
                 {
