@@ -1,7 +1,8 @@
 //! Render time of a 1280 × 800 frame (the browser canvas) of a 1000 × 1000 map with a
 //! potential field: the first frame (every layer drawn), a frame after a new field (heat map
-//! recoloured, background recomposed: what happens at each 10 Hz replan) and a cached frame
-//! (background copied, moving things drawn: every animation frame).
+//! recoloured, background recomposed: what happens at each 10 Hz replan), a cached frame
+//! (background copied, moving things drawn: every animation frame) and a frame after a
+//! `MapUpdate` of a 5 × 5 brush (painted and erased in turn; the update's own time included).
 //!
 //! `cargo bench -p rtnav --bench render`
 
@@ -10,8 +11,9 @@ use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rtnav::interfaces::Pose;
-use rtnav::map::GridMap;
+use rtnav::map::{GridMap, MapUpdate};
 use rtnav::render::{FieldCellState, FieldView, Renderer, RobotView, Scene};
+use rtnav::rtc::Time;
 
 const N: usize = 1000;
 const G: f64 = 0.05;
@@ -61,7 +63,12 @@ fn data() -> Data {
         }
     }
     let global: Vec<(usize, usize)> = (0..1200).map(|i| (100 + i * 3 / 4, 100 + i / 2)).collect();
-    let control = vec![(5.0, 5.0), (20.0, 12.0), (40.0, 35.0)];
+    // A control point every fourth cell of the local path, as a staircase path gives.
+    let control = global[..400]
+        .iter()
+        .step_by(4)
+        .map(|&(x, y)| ((x as f64 + 0.5) * G, (y as f64 + 0.5) * G))
+        .collect();
     let trail = (0..5000)
         .map(|i| (5.0 + i as f64 * 0.002, 5.0 + i as f64 * 0.001))
         .collect();
@@ -120,6 +127,27 @@ fn bench(c: &mut Criterion) {
     renderer.render(&scene(&d, 1)).unwrap();
     group.bench_function("cached_frame", |b| {
         b.iter(|| black_box(renderer.render(&scene(&d, 1)).unwrap().data()[0]))
+    });
+    let mut map = d.map.clone();
+    let mut edits = 0u32;
+    group.bench_function("map_update", |b| {
+        b.iter(|| {
+            edits += 1;
+            let value = i16::from(edits % 2 == 1);
+            let brush: Vec<(i64, i64, i16)> =
+                (0..25).map(|k| (300 + k % 5, 600 + k / 5, value)).collect();
+            let at = Time {
+                sec: edits,
+                nsec: 0,
+            };
+            map.map_update(&MapUpdate::from_cells(&brush, at)).unwrap();
+            let edited = Scene {
+                map: &map,
+                map_key: u64::from(edits) + 1,
+                ..scene(&d, 1)
+            };
+            black_box(renderer.render(&edited).unwrap().data()[0])
+        })
     });
     group.finish();
 }

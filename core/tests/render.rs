@@ -12,8 +12,9 @@ use std::path::PathBuf;
 
 use rtnav::errors::RenderError;
 use rtnav::interfaces::{Direction, Pose};
-use rtnav::map::{Cell, GridMap};
+use rtnav::map::{Cell, GridMap, MapUpdate};
 use rtnav::render::{FieldCellState, FieldView, Frame, Layers, Renderer, RobotView, Scene};
+use rtnav::rtc::Time;
 
 // ---------------------------------------------------------------------------------------
 // Hand-made scene data.
@@ -516,6 +517,83 @@ fn a_cached_frame_equals_a_fresh_one() {
     );
     renderer.resize(500, 500).unwrap();
     assert_eq!(renderer.render(&scene).unwrap(), &render(500, 500, &scene));
+}
+
+#[test]
+fn a_frame_after_map_updates_equals_a_fresh_one() {
+    // The renderer recolours and redraws only the cells a MapUpdate changed (when the map can
+    // tell which, inside the picture and clear of its border): the frame must be what a
+    // fresh renderer draws, with the heat map and without, with the side panel and without,
+    // grid lines (big cells) and not, cells bigger and smaller than a pixel.
+    let d = small_data();
+    let at = |sec| Time { sec, nsec: 0 };
+    let sizes = [
+        (640, 400, false),
+        (640, 400, true),
+        (200, 130, false),
+        (40, 30, false),
+    ];
+    for (width, height, side_panel) in sizes {
+        for heat_map in [true, false] {
+            let mut map = d.map.clone();
+            let layers = Layers {
+                heat_map,
+                ..Layers::ALL
+            };
+            let fresh = |map: &GridMap| {
+                let mut r = Renderer::new(width, height).unwrap();
+                r.set_side_panel(side_panel);
+                r.render(&Scene {
+                    map,
+                    layers,
+                    ..full_scene(&d)
+                })
+                .unwrap()
+                .clone()
+            };
+            let mut renderer = Renderer::new(width, height).unwrap();
+            renderer.set_side_panel(side_panel);
+            let strokes: [&[(i64, i64, i16)]; 4] = [
+                // Painted inside, then erased; two at once between frames; at the map's edge.
+                &[(20, 12, 1), (21, 12, 1), (21, 13, 1)],
+                &[(21, 12, 0)],
+                &[(30, 20, 1), (8, 9, 1)],
+                &[(0, 5, 0), (47, 31, 0), (1, 1, 1)],
+            ];
+            for (k, stroke) in strokes.iter().enumerate() {
+                renderer
+                    .render(&Scene {
+                        map: &map,
+                        map_key: k as u64 + 9,
+                        layers,
+                        ..full_scene(&d)
+                    })
+                    .unwrap();
+                map.map_update(&MapUpdate::from_cells(stroke, at(k as u32 + 1)))
+                    .unwrap();
+                if k == 2 {
+                    // A second update before the next frame.
+                    map.map_update(&MapUpdate::from_cells(&[(9, 9, 1)], at(10)))
+                        .unwrap();
+                }
+                // As the page does: a new map key with each update.
+                let cached = renderer
+                    .render(&Scene {
+                        map: &map,
+                        map_key: k as u64 + 10,
+                        layers,
+                        ..full_scene(&d)
+                    })
+                    .unwrap()
+                    .clone();
+                assert_eq!(
+                    cached,
+                    fresh(&map),
+                    "{width}×{height}, panel {side_panel}, heat {heat_map}, stroke {k}"
+                );
+            }
+        }
+    }
 }
 
 #[test]

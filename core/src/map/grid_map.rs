@@ -39,6 +39,18 @@ pub(crate) struct CellRect {
     pub y1: usize,
 }
 
+impl CellRect {
+    /// The smallest rectangle holding both.
+    pub(crate) fn union(&self, other: &Self) -> Self {
+        Self {
+            x0: self.x0.min(other.x0),
+            y0: self.y0.min(other.y0),
+            x1: self.x1.max(other.x1),
+            y1: self.y1.max(other.y1),
+        }
+    }
+}
+
 /// Which map, and which state of its obstacle distances: what a planner's cache of values
 /// derived from the distances (passable cells) was made from. Not part of a map's value
 /// (two equal maps have different stamps); it never changes a result, only whether a cache

@@ -14,7 +14,7 @@ use super::scene::{FieldCellState, FieldView, Layers};
 use super::style;
 use super::view::ViewTransform;
 use crate::errors::RenderError;
-use crate::map::GridMap;
+use crate::map::{CellRect, GridMap, MapStamp};
 
 /// Fills the rectangle `[x0, x1) × [y0, y1)` (clipped) of an RGBA buffer with opaque `c`.
 pub(crate) fn fill_rect(data: &mut [u8], width: u32, rect: (u32, u32, u32, u32), c: Rgba) {
@@ -199,38 +199,89 @@ impl Heat {
 }
 
 /// Per-cell colours of the occupancy and `dmin` layers; an obstacle shown as such carries
-/// [`SOLID`] so the heat map does not cover it.
+/// [`SOLID`] so the heat map does not cover it. They follow a map's `MapUpdate`s where its
+/// distances changed ([`Base::follow`]), so an edit does not recolour the whole map.
 #[derive(Debug, Clone)]
 pub(crate) struct Base {
     colours: Vec<u32>,
+    /// The state of the map the colours show.
+    stamp: MapStamp,
 }
 
 const SOLID: u32 = 1 << 24;
 
 impl Base {
     pub fn new(map: &GridMap, dmin: f64, layers: &Layers) -> Self {
-        let free = style::FREE.pack();
-        let zone = style::FREE.mix(style::DMIN, style::DMIN_ALPHA).pack();
-        let obstacle = style::OBSTACLE.pack() | SOLID;
+        let colour = Self::colouring(dmin, layers);
         let colours = map
             .cells()
             .iter()
             .zip(map.distances())
-            .map(|(&c, &d)| {
-                if c == 1 && layers.occupancy {
-                    obstacle
-                } else if layers.dmin_zone && crate::map::within_dmin(d, dmin) {
-                    zone
-                } else {
-                    free
-                }
-            })
+            .map(|(&c, &d)| colour(c, d))
             .collect();
-        Self { colours }
+        Self {
+            colours,
+            stamp: map.stamp(),
+        }
+    }
+
+    /// Brings the colours up to `map`'s state, given that they were made for this map value
+    /// (same size) with the same `dmin` and layers: recoloured where the distances changed
+    /// since — a changed cell changes its own distance, so that covers every cell whose
+    /// colour can differ — or everywhere when the map cannot tell where.
+    pub fn follow(&mut self, map: &GridMap, dmin: f64, layers: &Layers) {
+        let stamp = map.stamp();
+        if stamp == self.stamp {
+            return;
+        }
+        let Some(changes) = map.distance_changes_since(self.stamp) else {
+            *self = Self::new(map, dmin, layers);
+            return;
+        };
+        let colour = Self::colouring(dmin, layers);
+        let (w, cells, distances) = (map.width(), map.cells(), map.distances());
+        for r in changes {
+            for y in r.y0..r.y1 {
+                let row = y * w;
+                for i in row + r.x0..row + r.x1 {
+                    self.colours[i] = colour(cells[i], distances[i]);
+                }
+            }
+        }
+        self.stamp = stamp;
+    }
+
+    /// A cell's colour from its value and obstacle distance.
+    fn colouring(dmin: f64, layers: &Layers) -> impl Fn(u8, f64) -> u32 {
+        let free = style::FREE.pack();
+        let zone = style::FREE.mix(style::DMIN, style::DMIN_ALPHA).pack();
+        let obstacle = style::OBSTACLE.pack() | SOLID;
+        let (occupancy, dmin_zone) = (layers.occupancy, layers.dmin_zone);
+        move |c, d| {
+            if c == 1 && occupancy {
+                obstacle
+            } else if dmin_zone && crate::map::within_dmin(d, dmin) {
+                zone
+            } else {
+                free
+            }
+        }
     }
 }
 
-/// Draws the map raster into the RGBA buffer `data` of a frame `width` pixels wide.
+/// Pixel bounds `(x0, y0, x1, y1)`: columns `[x0, x1)`, rows `[y0, y1)`.
+pub(crate) type Bounds = (u32, u32, u32, u32);
+
+/// Which part of the map raster to draw: the pixels that show a cell of `cells` (the others
+/// would come out the same if their cells did not change), and only if `fits` accepts their
+/// bounds.
+pub(crate) struct Region<'a> {
+    pub cells: CellRect,
+    pub fits: &'a dyn Fn(Bounds) -> bool,
+}
+
+/// Draws the map raster into the RGBA buffer `data` of a frame `width` pixels wide: all of
+/// it, or `only` a region. Returns the bounds drawn; `None` if nothing was.
 pub(crate) fn draw_map(
     data: &mut [u8],
     width: u32,
@@ -238,7 +289,8 @@ pub(crate) fn draw_map(
     map: &GridMap,
     base: &Base,
     heat: Option<&Heat>,
-) {
+    only: Option<Region<'_>>,
+) -> Option<Bounds> {
     let w = map.width();
     let colour = |i: usize| -> u32 {
         let b = base.colours[i];
@@ -250,10 +302,18 @@ pub(crate) fn draw_map(
     let cs = view.pixels_per_metre() * map.grid_size();
     let (left, top, right, bottom) = view.map_rect();
     let height = (data.len() / 4) as u32 / width.max(1);
-    let cols = pixel_cells(left, right, cs, w, width, |i| i - left);
-    let rows = pixel_cells(top, bottom, cs, map.height(), height, |j| {
+    let mut cols = pixel_cells(left, right, cs, w, width, |i| i - left);
+    let mut rows = pixel_cells(top, bottom, cs, map.height(), height, |j| {
         bottom - (j + 1.0)
     });
+    // The first pixel column and row: no grid line on the map's own edge.
+    let (col0, row0) = (cols.first().map(|c| c.0), rows.first().map(|r| r.0));
+    if let Some(Region { cells: r, .. }) = only {
+        // Pixels show contiguous, ordered cell ranges: the ones meeting the rectangle are
+        // one run of columns and one of rows. Their first and last keep their own edge flag.
+        cols.retain(|&(_, c0, c1, _)| c0 < r.x1 && r.x0 < c1);
+        rows.retain(|&(_, r0, r1, _)| r0 < r.y1 && r.y0 < r1);
+    }
     let grid = cs >= 8.0;
     // Rounded division by n as a fixed-point multiply by ⌈2³²/n⌉ (exact for these sums).
     let most = |v: &[(u32, usize, usize, bool)]| v.iter().map(|c| c.2 - c.1).max().unwrap_or(1);
@@ -264,9 +324,16 @@ pub(crate) fn draw_map(
     let mut acc = vec![[0u32; 3]; w];
     let (c_first, c_last) = match (cols.first(), cols.last()) {
         (Some(a), Some(b)) => (a.1, b.2),
-        _ => return,
+        _ => return None,
     };
-    for (ri, &(j, r0, r1, row_edge)) in rows.iter().enumerate() {
+    let drawn = match (rows.first(), rows.last()) {
+        (Some(a), Some(b)) => (cols[0].0, a.0, cols[cols.len() - 1].0 + 1, b.0 + 1),
+        _ => return None,
+    };
+    if only.is_some_and(|o| !(o.fits)(drawn)) {
+        return None;
+    }
+    for &(j, r0, r1, row_edge) in &rows {
         for a in &mut acc[c_first..c_last] {
             *a = [0; 3];
         }
@@ -281,7 +348,7 @@ pub(crate) fn draw_map(
         }
         let line = (j * width) as usize * 4;
         let nr = (r1 - r0) as u32;
-        for (ci, &(i, c0, c1, col_edge)) in cols.iter().enumerate() {
+        for &(i, c0, c1, col_edge) in &cols {
             let n = nr * (c1 - c0) as u32;
             let mut c = if n == 1 {
                 let a = acc[c0];
@@ -297,13 +364,14 @@ pub(crate) fn draw_map(
                 let avg = |s: u32| ((u64::from(s + n / 2) * inv) >> 32).min(255) as u8;
                 Rgba::rgb(avg(sum[0]), avg(sum[1]), avg(sum[2]))
             };
-            if grid && ((row_edge && ri > 0) || (col_edge && ci > 0)) {
+            if grid && ((row_edge && Some(j) != row0) || (col_edge && Some(i) != col0)) {
                 c = c.shade(style::GRID_SHADE);
             }
             let k = line + i as usize * 4;
             data[k..k + 4].copy_from_slice(&[c.r, c.g, c.b, 255]);
         }
     }
+    Some(drawn)
 }
 
 /// For each frame pixel column (or row) whose centre lies in `[lo, hi)`: the pixel index, the
