@@ -20,7 +20,7 @@ use super::panel::{self, PanelInput, TextArea};
 use super::raster::{Base, Bounds, Heat, LogBins, Region, draw_map, fill_rect, viridis};
 use super::scene::{Layers, Scene};
 use super::style;
-use super::view::{Camera, Layout, ViewTransform};
+use super::view::{Camera, Layout, PixelRect, ViewTransform};
 use crate::errors::RenderError;
 use crate::interfaces::Direction;
 use crate::map::{Cell, CellRect, GridMap, MapStamp};
@@ -424,8 +424,8 @@ impl Renderer {
     }
 
     /// Redraws the background's pixels that show a cell of `cells`, if they lie inside the
-    /// map's picture clear of its border and there is no side panel (which are drawn over the
-    /// map raster); `false` (nothing drawn) otherwise.
+    /// map's picture, two pixels clear of its border and of the side panel (which are drawn
+    /// over the map raster); `false` (nothing drawn) otherwise.
     fn redraw_map_cells(
         &mut self,
         scene: &Scene<'_>,
@@ -433,17 +433,21 @@ impl Renderer {
         heat_on: bool,
         cells: CellRect,
     ) -> bool {
-        let (Some((_, base)), None) = (&self.base, self.layout.panel) else {
+        let Some((_, base)) = &self.base else {
             return false;
         };
+        let panel = self.layout.panel;
         let heat = self.heat.as_ref().map(|h| &h.1).filter(|_| heat_on);
-        // The pixels drawn must clear the border by two pixels.
         let (l, t, r, b) = view.map_rect();
         let clear = |(x0, y0, x1, y1): Bounds| {
+            let apart = |p: PixelRect| {
+                x1 + 2 <= p.x || p.x + p.w + 2 <= x0 || y1 + 2 <= p.y || p.y + p.h + 2 <= y0
+            };
             f64::from(x0) >= l + 2.0
                 && f64::from(y0) >= t + 2.0
                 && f64::from(x1) + 2.0 <= r
                 && f64::from(y1) + 2.0 <= b
+                && panel.is_none_or(apart)
         };
         let (data, width) = (self.background.data_mut(), self.layout.width);
         let only = Region {
