@@ -13,6 +13,7 @@ mod checks;
 mod control_points;
 mod escape;
 mod field_queue;
+mod field_word;
 mod local_path;
 mod local_target;
 mod merge;

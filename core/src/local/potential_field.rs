@@ -38,12 +38,15 @@
 //!   its data-dependent branches.
 
 use std::cell::OnceCell;
-use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
 use super::angle::atan2_nonneg;
 use super::field_queue::{Entry, FieldQueue};
+use super::field_word::{
+    D2_SHIFT, IMPASSABLE, PARENT_MASK, PARENT_SHIFT, RAW_D2, REACHED, Repulsion, STATE_MASK,
+    UNREACHED,
+};
 use crate::errors::LocalPathError;
 use crate::interfaces::Direction;
 use crate::map::{Cell, GridMap, MapStamp};
@@ -70,23 +73,6 @@ const NOT_FINAL: u32 = u32::MAX;
 /// in the order they were reached does: a full field on 1000 × 1000 cells reset in 3.4 ms
 /// instead of 12.4 ms).
 const RESET_SWEEP: usize = 3;
-const UNREACHED: u32 = CellState::Unreached as u32;
-const REACHED: u32 = CellState::Reached as u32;
-const IMPASSABLE: u32 = CellState::Impassable as u32;
-/// A cell's word: its [`CellState`] in bits 0–1, `1 +` the index into [`NEIGHBOURS`] of
-/// the move it was reached by in bits 2–5 (0: none), and its squared obstacle distance in
-/// cells² from bit 6 on (kept with the impassable marks; 0 on impassable cells): what the
-/// expansion of a neighbour reads, in one load.
-const STATE_MASK: u32 = 0b11;
-const PARENT_SHIFT: u32 = 2;
-const PARENT_MASK: u32 = 0b11_1100;
-const D2_SHIFT: u32 = 6;
-/// Squared obstacle distances (cells²) below this have their repulsion in a table.
-const TABLE_D2: u32 = 1 << 14;
-/// In place of a squared distance: the cell's metres are not `map::to_metres` of an
-/// integer below 2²⁶ − 1 (never, for a `GridMap` of at most 2²⁴ cells, whose distances are
-/// below 2²³ cells²); its repulsion is kept aside.
-const RAW_D2: u32 = u32::MAX >> D2_SHIFT;
 
 /// What a cell of the field is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -207,7 +193,7 @@ pub struct PotentialField {
     /// The state codes alone, made from `words` when first asked for.
     codes: OnceCell<Vec<u8>>,
     /// The repulsion of the grid size and `dmin` of `marks` by squared distance below
-    /// [`TABLE_D2`], and of the cells marked [`RAW_D2`].
+    /// [`TABLE_D2`](super::field_word::TABLE_D2), and of the cells marked [`RAW_D2`].
     repulsion: Repulsion,
     /// Cells assigned by the last computation, in assignment order (reset on the next).
     touched: Vec<u32>,
@@ -623,7 +609,7 @@ impl PotentialField {
             Some(req) if state == CellState::Reached && parent.is_some() => {
                 let t = Terms::new(self.grid_size, req);
                 let r = match self.words[i] >> D2_SHIFT {
-                    RAW_D2 => self.repulsion.raw.get(&(i as u32)).copied().unwrap_or(0.0),
+                    RAW_D2 => self.repulsion.raw(i as u32).unwrap_or(0.0),
                     k2 => self.repulsion.of(k2),
                 };
                 (
@@ -665,72 +651,6 @@ impl PotentialField {
     /// Number of reached cells (finalized plus frontier).
     pub fn reached_count(&self) -> usize {
         self.touched.len()
-    }
-}
-
-/// The repulsion `R = 1 / (d − dmin)²` by squared obstacle distance, for one grid size
-/// and `dmin`; and the impassable marks and squared distances of cells.
-#[derive(Debug, Clone, Default)]
-struct Repulsion {
-    grid: f64,
-    dmin: f64,
-    /// By squared distance below [`TABLE_D2`].
-    table: Vec<f64>,
-    /// The cells marked [`RAW_D2`] (never, for a `GridMap`'s distances).
-    raw: BTreeMap<u32, f64>,
-}
-
-impl Repulsion {
-    fn new(grid: f64, dmin: f64) -> Self {
-        Self {
-            grid,
-            dmin,
-            table: (0..TABLE_D2)
-                .map(|k2| Self::formula(k2, grid, dmin))
-                .collect(),
-            raw: BTreeMap::new(),
-        }
-    }
-
-    /// `R` of a passable cell at `√k2 · g` metres: the metres as the map makes them
-    /// (`map::to_metres`), then the seed's formula.
-    #[inline(always)]
-    fn formula(k2: u32, grid: f64, dmin: f64) -> f64 {
-        let clearance = crate::map::to_metres(u64::from(k2), grid) - dmin;
-        1.0 / (clearance * clearance)
-    }
-
-    #[inline(always)]
-    fn of(&self, k2: u32) -> f64 {
-        match self.table.get(k2 as usize) {
-            Some(&r) => r,
-            None => Self::formula(k2, self.grid, self.dmin),
-        }
-    }
-
-    /// Marks the cells `from..` with obstacle distances `dist`: impassable, or unreached
-    /// with their squared distance.
-    fn mark(&mut self, from: usize, dist: &[f64], words: &mut [u32]) {
-        for (i, (&d, word)) in dist.iter().zip(words).enumerate() {
-            if crate::map::within_dmin(d, self.dmin) {
-                *word = IMPASSABLE;
-                continue;
-            }
-            // Metres are √d² · g (`map::to_metres`); d² comes back exactly from them (the
-            // relative error of (d/g)² is below 7·2⁻⁵³, d² < 2⁴⁹), and is used only if it
-            // gives the very same metres.
-            let q = d / self.grid;
-            let r = (q * q).round();
-            let k2 = if r < f64::from(RAW_D2) && crate::map::to_metres(r as u64, self.grid) == d {
-                r as u32
-            } else {
-                let clearance = d - self.dmin;
-                self.raw
-                    .insert((from + i) as u32, 1.0 / (clearance * clearance));
-                RAW_D2
-            };
-            *word = (k2 << D2_SHIFT) | UNREACHED;
-        }
     }
 }
 
