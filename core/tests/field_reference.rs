@@ -95,7 +95,7 @@ fn same(
                 ((x as i64 - dx) as usize, (y as i64 - dy) as usize)
             });
             prop_assert_eq!(a.parent, parent, "{} parent", what);
-            prop_assert_eq!(fast.state_codes()[i], r.state[i] as u8, "{} code", what);
+            prop_assert_eq!(fast.state((x, y)) as u8, r.state[i] as u8, "{} code", what);
         }
     }
     let path = descend(fast, req.current).ok();

@@ -89,7 +89,7 @@ pub enum CellState {
 }
 
 impl CellState {
-    /// From the byte of [`PotentialField::state_codes`].
+    /// From its code: 0 unreached, 1 reached, 2 impassable (anything else: unreached).
     pub fn from_code(code: u8) -> Self {
         match code {
             1 => Self::Reached,
@@ -190,8 +190,6 @@ pub struct PotentialField {
     cells: Vec<FieldCell>,
     /// Per cell: state, parent and squared obstacle distance (see [`STATE_MASK`]).
     words: Vec<u32>,
-    /// The state codes alone, made from `words` when first asked for.
-    codes: OnceCell<Vec<u8>>,
     /// The repulsion of the grid size and `dmin` of `marks` by squared distance below
     /// [`TABLE_D2`](super::field_word::TABLE_D2), and of the cells marked [`RAW_D2`].
     repulsion: Repulsion,
@@ -345,7 +343,6 @@ impl PotentialField {
             }
             Some(_) => {
                 self.ranks = OnceCell::new();
-                self.codes = OnceCell::new();
                 if !self.grow(map, &request, budget) {
                     return Ok(false);
                 }
@@ -394,7 +391,6 @@ impl PotentialField {
         self.touched.clear();
         self.order.clear();
         self.ranks = OnceCell::new();
-        self.codes = OnceCell::new();
         self.queue.clear();
         let grid = map.grid_size();
         self.grid_size = grid;
@@ -542,11 +538,11 @@ impl PotentialField {
         self.flat(cell).map_or(0.0, |i| self.cells[i].potential)
     }
 
-    /// [`CellState`] per cell as bytes (0 unreached, 1 reached, 2 impassable), for a typed
-    /// view in the browser (made on the first call after a computation).
-    pub fn state_codes(&self) -> &[u8] {
-        self.codes
-            .get_or_init(|| self.words.iter().map(|&w| (w & STATE_MASK) as u8).collect())
+    /// [`CellState`] of every cell, x fastest, as the map.
+    pub fn states(&self) -> impl ExactSizeIterator<Item = CellState> + '_ {
+        self.words
+            .iter()
+            .map(|&w| CellState::from_code((w & STATE_MASK) as u8))
     }
 
     fn flat(&self, (x, y): Cell) -> Option<usize> {

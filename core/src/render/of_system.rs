@@ -39,11 +39,7 @@ impl FieldBuffers {
                     self.potential.clear();
                     self.potential.extend(f.cells().iter().map(|c| c.potential));
                     self.state.clear();
-                    self.state.extend(
-                        f.state_codes()
-                            .iter()
-                            .map(|&c| field_state(CellState::from_code(c))),
-                    );
+                    self.state.extend(f.states().map(field_state));
                     self.key = Some(key);
                 }
             }
