@@ -376,36 +376,7 @@ impl Renderer {
             camera: self.camera,
         };
         if self.background_key != Some(key) {
-            // Only the map's key or version changed (a `MapUpdate`): redraw the pixels of the
-            // cells that changed since the background was drawn, when the map can tell which
-            // (the same map value, its changes remembered: see `GridMap::stamp`).
-            let map_updated = self.background_key.is_some_and(|old| {
-                let (k, version) = (key.map.key, key.map.version);
-                BackgroundKey {
-                    map: MapKey {
-                        key: k,
-                        version,
-                        ..old.map
-                    },
-                    ..old
-                } == key
-            });
-            let changed = map_updated
-                .then_some(self.background_stamp)
-                .flatten()
-                .and_then(|since| map.distance_changes_since(since))
-                .map(|rects| rects.reduce(|a, b| a.union(&b)));
-            let redrawn = match changed {
-                Some(None) => true,
-                Some(Some(rect)) => self.redraw_map_cells(scene, &view, field.is_some(), rect),
-                None => false,
-            };
-            if !redrawn {
-                self.draw_background(scene, &view, field.is_some());
-            }
-            self.background_key = Some(key);
-            self.background_stamp = Some(map.stamp());
-            self.background_generation += 1;
+            self.update_background(scene, &view, key, field.is_some());
         }
         if !self.plan_drawn.shows(self.background_generation, scene) {
             self.plan_layer
@@ -421,6 +392,47 @@ impl Renderer {
         self.draw_overlays(scene, &view);
         self.draw_panel_text(scene);
         Ok(&self.frame)
+    }
+
+    /// Brings the background up to `key`: after a `MapUpdate` alone, only the pixels of the
+    /// cells that changed since it was drawn, when the map can tell which (the same map
+    /// value, its changes remembered: see `GridMap::stamp`); else all of it.
+    fn update_background(
+        &mut self,
+        scene: &Scene<'_>,
+        view: &ViewTransform,
+        key: BackgroundKey,
+        heat_on: bool,
+    ) {
+        let map = scene.map;
+        // Only the map's key or version changed: a `MapUpdate`.
+        let map_updated = self.background_key.is_some_and(|old| {
+            let (k, version) = (key.map.key, key.map.version);
+            BackgroundKey {
+                map: MapKey {
+                    key: k,
+                    version,
+                    ..old.map
+                },
+                ..old
+            } == key
+        });
+        let changed = map_updated
+            .then_some(self.background_stamp)
+            .flatten()
+            .and_then(|since| map.distance_changes_since(since))
+            .map(|rects| rects.reduce(|a, b| a.union(&b)));
+        let redrawn = match changed {
+            Some(None) => true,
+            Some(Some(rect)) => self.redraw_map_cells(scene, view, heat_on, rect),
+            None => false,
+        };
+        if !redrawn {
+            self.draw_background(scene, view, heat_on);
+        }
+        self.background_key = Some(key);
+        self.background_stamp = Some(map.stamp());
+        self.background_generation += 1;
     }
 
     /// Redraws the background's pixels that show a cell of `cells`, if they lie inside the
