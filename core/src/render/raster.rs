@@ -210,6 +210,14 @@ pub(crate) struct Base {
 
 const SOLID: u32 = 1 << 24;
 
+/// Which cells [`Base::follow`] recoloured.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Recoloured {
+    Nothing,
+    Within(CellRect),
+    All,
+}
+
 impl Base {
     pub fn new(map: &GridMap, dmin: f64, layers: &Layers) -> Self {
         let colour = Self::colouring(dmin, layers);
@@ -229,17 +237,18 @@ impl Base {
     /// (same size) with the same `dmin` and layers: recoloured where the distances changed
     /// since — a changed cell changes its own distance, so that covers every cell whose
     /// colour can differ — or everywhere when the map cannot tell where.
-    pub fn follow(&mut self, map: &GridMap, dmin: f64, layers: &Layers) {
+    pub fn follow(&mut self, map: &GridMap, dmin: f64, layers: &Layers) -> Recoloured {
         let stamp = map.stamp();
         if stamp == self.stamp {
-            return;
+            return Recoloured::Nothing;
         }
         let Some(changes) = map.distance_changes_since(self.stamp) else {
             *self = Self::new(map, dmin, layers);
-            return;
+            return Recoloured::All;
         };
         let colour = Self::colouring(dmin, layers);
         let (w, cells, distances) = (map.width(), map.cells(), map.distances());
+        let mut within: Option<CellRect> = None;
         for r in changes {
             for y in r.y0..r.y1 {
                 let row = y * w;
@@ -247,8 +256,10 @@ impl Base {
                     self.colours[i] = colour(cells[i], distances[i]);
                 }
             }
+            within = Some(within.map_or(r, |u| u.union(&r)));
         }
         self.stamp = stamp;
+        within.map_or(Recoloured::Nothing, Recoloured::Within)
     }
 
     /// A cell's colour from its value and obstacle distance.

@@ -17,13 +17,15 @@ use super::draw::{self, Px};
 use super::frame::Frame;
 use super::of_system::{FieldBuffers, ghost_of, scene_of};
 use super::panel::{self, PanelInput, TextArea};
-use super::raster::{Base, Bounds, Heat, LogBins, Region, draw_map, fill_rect, viridis};
+use super::raster::{
+    Base, Bounds, Heat, LogBins, Recoloured, Region, draw_map, fill_rect, viridis,
+};
 use super::scene::{Layers, Scene};
 use super::style;
 use super::view::{Camera, Layout, PixelRect, ViewTransform};
 use crate::errors::RenderError;
 use crate::interfaces::Direction;
-use crate::map::{Cell, CellRect, GridMap, MapStamp};
+use crate::map::{Cell, CellRect, GridMap};
 use crate::rtc::Time;
 use crate::system::System;
 
@@ -97,27 +99,27 @@ struct HeatKey {
 /// Paths and the trail are drawn through the fewest points within this many pixels of them.
 const SIMPLIFY: f32 = 0.5;
 
-/// What the plan layer shows: the background it was drawn over (by generation) and the
-/// paths and control points drawn on it.
+/// What the plan layer shows over the background: the paths and control points drawn, or
+/// nothing valid since the background was redrawn.
 #[derive(Debug, Clone, Default, PartialEq)]
 struct PlanDrawn {
-    background: Option<u64>,
+    valid: bool,
     global_path: Vec<Cell>,
     local_path: Vec<Cell>,
     control_points: Vec<(f64, f64)>,
 }
 
 impl PlanDrawn {
-    /// Whether the layer drawn over background `generation` shows `scene`'s plan.
-    fn shows(&self, generation: u64, scene: &Scene<'_>) -> bool {
-        self.background == Some(generation)
+    /// Whether the layer shows `scene`'s plan over the current background.
+    fn shows(&self, scene: &Scene<'_>) -> bool {
+        self.valid
             && self.global_path == scene.global_path
             && self.local_path == scene.local_path
             && self.control_points == scene.control_points
     }
 
-    fn remember(&mut self, generation: u64, scene: &Scene<'_>) {
-        self.background = Some(generation);
+    fn remember(&mut self, scene: &Scene<'_>) {
+        self.valid = true;
         for (kept, now) in [
             (&mut self.global_path, scene.global_path),
             (&mut self.local_path, scene.local_path),
@@ -127,6 +129,11 @@ impl PlanDrawn {
         }
         self.control_points.clear();
         self.control_points.extend_from_slice(scene.control_points);
+    }
+
+    /// The background changed under the layer.
+    fn forget(&mut self) {
+        self.valid = false;
     }
 }
 
@@ -141,10 +148,6 @@ pub struct Renderer {
     frame: Frame,
     background: Pixmap,
     background_key: Option<BackgroundKey>,
-    /// The state of the map the background shows (for redrawing only where it changed).
-    background_stamp: Option<MapStamp>,
-    /// Counts the background's redraws: what the plan layer was drawn over.
-    background_generation: u64,
     /// The background with the paths and control points over it.
     plan_layer: Pixmap,
     plan_drawn: PlanDrawn,
@@ -191,8 +194,6 @@ impl Renderer {
             },
             background: pixmap(width, height)?,
             background_key: None,
-            background_stamp: None,
-            background_generation: 0,
             plan_layer: pixmap(width, height)?,
             plan_drawn: PlanDrawn::default(),
             text_area: None,
@@ -357,16 +358,6 @@ impl Renderer {
                 self.heat = Some((key, heat));
             }
         }
-        let base_key = BaseKey {
-            map: map_key.shape,
-            dmin: scene.dmin.to_bits(),
-            occupancy: scene.layers.occupancy,
-            dmin_zone: scene.layers.dmin_zone,
-        };
-        match &mut self.base {
-            Some((key, base)) if *key == base_key => base.follow(map, scene.dmin, &scene.layers),
-            _ => self.base = Some((base_key, Base::new(map, scene.dmin, &scene.layers))),
-        }
         let view = self.layout.view_with(map, self.camera);
         let key = BackgroundKey {
             map: map_key,
@@ -378,12 +369,12 @@ impl Renderer {
         if self.background_key != Some(key) {
             self.update_background(scene, &view, key, field.is_some());
         }
-        if !self.plan_drawn.shows(self.background_generation, scene) {
+        if !self.plan_drawn.shows(scene) {
             self.plan_layer
                 .data_mut()
                 .copy_from_slice(self.background.data());
             self.draw_plan(scene, &view);
-            self.plan_drawn.remember(self.background_generation, scene);
+            self.plan_drawn.remember(scene);
         }
         self.frame
             .pixmap
@@ -394,9 +385,10 @@ impl Renderer {
         Ok(&self.frame)
     }
 
-    /// Brings the background up to `key`: after a `MapUpdate` alone, only the pixels of the
-    /// cells that changed since it was drawn, when the map can tell which (the same map
-    /// value, its changes remembered: see `GridMap::stamp`); else all of it.
+    /// Brings the background up to `key`, with the base colours it is drawn from: after a
+    /// `MapUpdate` alone, only the pixels of the cells the base recoloured ([`Base::follow`]);
+    /// else all of it. The base changes only here, so it always shows what the background
+    /// was last drawn from.
     fn update_background(
         &mut self,
         scene: &Scene<'_>,
@@ -404,7 +396,20 @@ impl Renderer {
         key: BackgroundKey,
         heat_on: bool,
     ) {
-        let map = scene.map;
+        let (map, dmin, layers) = (scene.map, scene.dmin, &scene.layers);
+        let base_key = BaseKey {
+            map: key.map.shape,
+            dmin: dmin.to_bits(),
+            occupancy: layers.occupancy,
+            dmin_zone: layers.dmin_zone,
+        };
+        let recoloured = match &mut self.base {
+            Some((k, base)) if *k == base_key => base.follow(map, dmin, layers),
+            _ => {
+                self.base = Some((base_key, Base::new(map, dmin, layers)));
+                Recoloured::All
+            }
+        };
         // Only the map's key or version changed: a `MapUpdate`.
         let map_updated = self.background_key.is_some_and(|old| {
             let (k, version) = (key.map.key, key.map.version);
@@ -417,22 +422,17 @@ impl Renderer {
                 ..old
             } == key
         });
-        let changed = map_updated
-            .then_some(self.background_stamp)
-            .flatten()
-            .and_then(|since| map.distance_changes_since(since))
-            .map(|rects| rects.reduce(|a, b| a.union(&b)));
-        let redrawn = match changed {
-            Some(None) => true,
-            Some(Some(rect)) => self.redraw_map_cells(scene, view, heat_on, rect),
-            None => false,
-        };
+        let redrawn = map_updated
+            && match recoloured {
+                Recoloured::Nothing => true,
+                Recoloured::Within(cells) => self.redraw_map_cells(scene, view, heat_on, cells),
+                Recoloured::All => false,
+            };
         if !redrawn {
             self.draw_background(scene, view, heat_on);
         }
         self.background_key = Some(key);
-        self.background_stamp = Some(map.stamp());
-        self.background_generation += 1;
+        self.plan_drawn.forget();
     }
 
     /// Redraws the background's pixels that show a cell of `cells`, if they lie inside the
