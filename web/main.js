@@ -34,11 +34,6 @@ const FRAME_TIMES = 600;
  * (the same ticks: the trace does not change), so a plan on a large map doesn't freeze the
  * page for the rest of its frame's simulated time. */
 const STEP_BUDGET_MS = 10;
-/** A frame whose simulation took longer than this [ms] leaves its drawing to the next frame,
- * which then only draws: an expensive tick (a local plan beginning on a large map) and the
- * expensive redraw it causes (that plan's heat map) fall into two frames instead of adding
- * up in one. Twice the budget: only a single tick can overrun it. */
-const DRAW_DEFER_MS = 2 * STEP_BUDGET_MS;
 /** Owed simulated time [s] from which the clock shows that it is behind. */
 const BEHIND_S = 0.05;
 
@@ -126,14 +121,20 @@ async function boot() {
 
   const frameTimes = [];
   // The frame budget counts what the requests between two frames took (a stroke's MapUpdate
-  // or a goal on a large map): after one that took the budget, the frame only draws, and its
-  // ticks stay owed to the next frames (the same ticks: the trace does not change).
+  // or a goal on a large map): after one that took the budget, the frame steps no further,
+  // and its ticks stay owed to the next frames (the same ticks: the trace does not change).
+  // A frame that spent more than its budget and would redraw the map or the paths (a new
+  // plan, an edit: `draws_from_cache` false) leaves its drawing to the next frame, which
+  // then only draws: an expensive tick or request and the expensive redraw it causes fall
+  // into two frames instead of adding up in one.
+  let drawOwed = false;
   const loop = startLoop((elapsedMs) => {
     const t0 = performance.now();
-    const budget = STEP_BUDGET_MS - app.requestMs;
+    const budget = drawOwed ? 0 : STEP_BUDGET_MS - app.requestMs;
     guard.call(() => demo.step_within(elapsedMs, budget));
-    const drawLater = performance.now() - t0 > DRAW_DEFER_MS;
-    if (!drawLater) app.stage.draw();
+    const spent = app.requestMs + performance.now() - t0;
+    drawOwed = !drawOwed && spent > STEP_BUDGET_MS && !guard.call(() => demo.draws_from_cache());
+    if (!drawOwed) app.stage.draw();
     const t1 = performance.now();
     if (guard.crashed) return false;
     frameTimes.push(t1 - t0);
@@ -158,9 +159,8 @@ async function boot() {
     inspector.update(now, tabs.visible('inspector'));
     plots.update(now, tabs.visible('plots'));
     system.update(now, tabs.visible('system'), components);
-    // This frame's own requests (drawing, the panels) are not the next frame's; a frame that
-    // left its drawing to the next one gives it no simulation time.
-    app.requestMs = drawLater ? STEP_BUDGET_MS : 0;
+    // This frame's own requests (drawing, the panels) are not the next frame's.
+    app.requestMs = 0;
     return !guard.crashed;
   });
   guard.onCrash(() => loop.stop());

@@ -986,3 +986,76 @@ fn after_arrival_the_drawn_direction_is_the_one_asked_for() {
     assert_eq!(s.mission().direction(), Direction::Forward);
     assert_eq!(scene.direction, Direction::Forward);
 }
+
+#[test]
+fn the_renderer_says_when_a_frame_draws_from_its_cache() {
+    // `draws_from_cache` is what the page asks before drawing after an expensive step: true
+    // exactly when the map, the plan (field, route, local path, control points), the layers
+    // and the view are those of the last frame.
+    use rtnav::data::RepoResolver;
+    use rtnav::system::{Input, Scenario, ScenarioRun, System};
+    let text = std::fs::read_to_string("../fixtures/scenarios/appearing_obstacle.json").unwrap();
+    let scenario = Scenario::from_json(&text).unwrap();
+    let mut run = ScenarioRun::new(&scenario, &RepoResolver::new("..")).unwrap();
+    let mut r = Renderer::new(320, 200).unwrap();
+    assert!(
+        !r.draws_from_cache(run.system(), Layers::ALL),
+        "no frame yet"
+    );
+    type Drawn = (Time, u64, Vec<Cell>, Vec<Cell>, usize);
+    let drawn_of = |s: &System| -> Drawn {
+        let lpp = s.wiring().local_path_planning();
+        (
+            s.map().unwrap().version(),
+            lpp.plan_count(),
+            s.mission().route().to_vec(),
+            lpp.merged_path().to_vec(),
+            lpp.control_points().map_or(0, |c| c.points.len()),
+        )
+    };
+    let (mut last, mut cached, mut redrawn) = (None::<Drawn>, 0, 0);
+    // A frame every 50 ticks (the page's ~60 Hz at 3×); the obstacle that appears makes
+    // the planners plan again.
+    while run.advance(50).is_none() {
+        let s = run.system();
+        let now = drawn_of(s);
+        let same = last.as_ref() == Some(&now);
+        assert_eq!(
+            r.draws_from_cache(s, Layers::ALL),
+            same,
+            "at {} s",
+            s.time()
+        );
+        if same {
+            cached += 1;
+        } else {
+            redrawn += 1;
+        }
+        r.render_system(s, "", Layers::ALL).unwrap();
+        assert!(r.draws_from_cache(s, Layers::ALL));
+        last = Some(now);
+    }
+    assert!(
+        cached > 100 && redrawn >= 3,
+        "{cached} cached, {redrawn} redrawn"
+    );
+    let mut s = run.into_system();
+    r.render_system(&s, "", Layers::ALL).unwrap();
+    assert!(r.draws_from_cache(&s, Layers::ALL));
+    // Another layer set, another view, an edit of the map: the static layers are redrawn.
+    let no_heat = Layers {
+        heat_map: false,
+        ..Layers::ALL
+    };
+    assert!(!r.draws_from_cache(&s, no_heat));
+    s.apply(&Input::MapUpdate {
+        cells: vec![(1, 1, 1)],
+    })
+    .unwrap();
+    assert!(!r.draws_from_cache(&s, Layers::ALL), "after a MapUpdate");
+    r.render_system(&s, "", Layers::ALL).unwrap();
+    assert!(r.draws_from_cache(&s, Layers::ALL));
+    let map = s.map().unwrap().clone();
+    r.zoom_at(&map, 160.0, 100.0, 2.0);
+    assert!(!r.draws_from_cache(&s, Layers::ALL), "after a zoom");
+}

@@ -263,6 +263,15 @@ impl Inner {
         Ok(true)
     }
 
+    /// Whether the next [`render`](Self::render) is cheap: nothing to draw, or only the
+    /// moving parts over the layers kept ([`Renderer::draws_from_cache`]).
+    pub(crate) fn draws_from_cache(&self) -> bool {
+        !self.dirty
+            || self
+                .renderer
+                .draws_from_cache(self.session.system(), self.layers)
+    }
+
     pub(crate) fn resize(&mut self, width: u32, height: u32) -> Msg<()> {
         self.renderer.resize(width, height).map_err(refused)?;
         self.dirty = true;
@@ -646,6 +655,14 @@ impl Demo {
     /// Draws the current state into the frame if anything changed. Returns whether it drew.
     pub fn render(&mut self) -> Result<bool, JsValue> {
         self.0.render().map_err(js)
+    }
+
+    /// Whether the next `render` only draws the moving parts (robot, trail, marks) over the
+    /// layers kept from the last frame; `false` when a new plan, a map edit or a new view
+    /// makes it redraw the map and the paths (the page leaves that to the next frame after
+    /// an expensive step).
+    pub fn draws_from_cache(&self) -> bool {
+        self.0.draws_from_cache()
     }
 
     /// Changes the frame size (pixels).

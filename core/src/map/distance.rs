@@ -24,30 +24,30 @@
 //! The row phase of a row depends only on that row of `g`, and `g` of a column only on that
 //! column's cells. That is what makes the exact *incremental* update after `MapUpdate` simple
 //! ([`DistanceField::update_cells`]): recompute `g` for the changed columns, then the row phase
-//! for exactly the rows where some `g` changed. (`g` is kept from the first `MapUpdate` on; a
-//! new map streams it through its distance array instead, see [`DistanceField::new`].)
+//! for exactly the rows where some `g` changed. `g` is therefore kept with the distances from
+//! the map's load on, so the first edit costs what any other does.
 
 use super::grid_map::CellRect;
 
 /// The obstacle distances of a map, and what is needed to keep them current.
 ///
-/// Invariants: `distance` is the full transform of the current cells in metres; `column`,
-/// when present, is their column phase (`width · height` entries). It is kept only once a
-/// `MapUpdate` has needed it, so a map that is never updated carries no column array, and
-/// building one allocates only the distances.
+/// Invariants: `distance` is the full transform of the current cells in metres; `column` is
+/// their column phase (`width · height` entries, 4 bytes a cell: made with the distances at
+/// the map's load, so that no `MapUpdate` — on a large map, the first stroke of the brush —
+/// has to make it).
 #[derive(Debug, Clone)]
 pub(crate) struct DistanceField {
     /// Phase 1: cells from each cell to the nearest obstacle in its column (virtual rows
     /// `−1` and `height` included), x fastest.
-    column: Option<Vec<u32>>,
+    column: Vec<u32>,
     /// Obstacle distance in metres, x fastest.
     distance: Vec<f64>,
     /// `d²` → metres for this map's grid size (kept: a `MapUpdate` reuses it).
     metres: Metres,
 }
 
-/// Equal when the distances are equal: the column phase is derived data (and kept or not
-/// depending on the map's history), the metre table follows from the grid size.
+/// Equal when the distances are equal: the column phase and the metre table follow from the
+/// cells and the grid size.
 impl PartialEq for DistanceField {
     fn eq(&self, other: &Self) -> bool {
         self.distance == other.distance
@@ -280,51 +280,31 @@ fn column_phase_one(cells: &[u8], width: usize, x: usize, out: &mut [u32]) {
 
 impl DistanceField {
     /// The transform of `cells` (x fastest, 1 = obstacle; `width, height ≥ 1`), in metres
-    /// with `grid_size`.
-    ///
-    /// Streams the column phase through the distance array itself: the down sweep is stored
-    /// in `distance` (whole numbers, exact in `f64`), then the rows are finished bottom-up —
-    /// the up sweep needs only the row below, and a row's metres overwrite its own down-sweep
-    /// values once they are read. So the only large allocation is the result.
+    /// with `grid_size`, and its column phase.
     pub(crate) fn new(cells: &[u8], width: usize, height: usize, grid_size: f64) -> Self {
         debug_assert_eq!(cells.len(), width * height);
         let metres = Metres::new(width, height, grid_size);
+        let mut column = vec![0u32; cells.len()];
+        column_phase(cells, width, height, &mut column);
         let mut distance = vec![0.0; cells.len()];
-        // Down sweep: distance to the nearest obstacle at or above (virtual row −1).
-        for (d, &c) in distance[..width].iter_mut().zip(&cells[..width]) {
-            *d = f64::from(u8::from(c == 0));
-        }
-        for y in 1..height {
-            let (done, rest) = distance.split_at_mut(y * width);
-            let prev = &done[(y - 1) * width..];
-            let crow = &cells[y * width..(y + 1) * width];
-            for ((d, &p), &c) in rest[..width].iter_mut().zip(prev).zip(crow) {
-                *d = if c == 0 { p + 1.0 } else { 0.0 };
-            }
-        }
-        // Up sweep (virtual row `height` is obstacle) and row phase, bottom-up.
-        let mut below = vec![0u32; width];
-        let mut row = vec![0u32; width];
         let mut scratch = RowScratch::new(width);
-        for out in distance.chunks_exact_mut(width).rev() {
-            for ((g, &down), &b) in row.iter_mut().zip(out.iter()).zip(&below) {
-                *g = (down as u32).min(b + 1);
-            }
-            transform_row(&mut scratch, &metres, &row, out);
-            core::mem::swap(&mut row, &mut below);
+        for (g, out) in column
+            .chunks_exact(width)
+            .zip(distance.chunks_exact_mut(width))
+        {
+            transform_row(&mut scratch, &metres, g, out);
         }
         Self {
-            column: None,
+            column,
             distance,
             metres,
         }
     }
 
-    /// The whole transform again, in place, keeping the column phase for later updates.
-    /// Returns the rectangle of the cells whose distance changed, if any did.
+    /// The whole transform again, in place. Returns the rectangle of the cells whose
+    /// distance changed, if any did.
     fn recompute(&mut self, cells: &[u8], width: usize, height: usize) -> Option<CellRect> {
-        let column = self.column.get_or_insert_with(Vec::new);
-        column.resize(cells.len(), 0);
+        let column = &mut self.column;
         column_phase(cells, width, height, column);
         let mut scratch = RowScratch::new(width);
         let mut row = vec![0.0; width];
@@ -381,25 +361,7 @@ impl DistanceField {
             // Many columns: the row-major full recompute is cheaper than strided columns.
             return self.recompute(cells, width, height);
         }
-        let column = match &mut self.column {
-            Some(column) => column,
-            None => {
-                // The first update: the column phase is made now (one vectorised pass) and
-                // kept, then updated like any other.
-                let mut column = vec![0u32; cells.len()];
-                // The column phase of the old cells: the changed cells flipped back.
-                let mut old = Vec::with_capacity(changed.len());
-                for &i in changed {
-                    old.push((i, cells[i]));
-                }
-                let mut before = cells.to_vec();
-                for &(i, v) in &old {
-                    before[i] = 1 - v;
-                }
-                column_phase(&before, width, height, &mut column);
-                self.column.insert(column)
-            }
-        };
+        let column = &mut self.column;
         // Per row: the span of changed columns and the smallest min(g_old, g_new)².
         let mut rows: Vec<(u32, u32, u64)> = vec![(u32::MAX, 0, u64::MAX); height];
         let mut dirty: Vec<usize> = Vec::new();

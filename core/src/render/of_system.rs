@@ -29,13 +29,12 @@ fn field_state(s: CellState) -> FieldCellState {
 }
 
 impl FieldBuffers {
-    /// Converts `field` if `key` differs from the last one converted; drops it if there is
-    /// none, or if it does not have `cells` cells (a field of another map, just after a
-    /// load).
-    fn refresh(&mut self, field: Option<&PotentialField>, key: u64, cells: usize) {
+    /// Converts `field` (with its key) if the key differs from the last one converted;
+    /// drops what it holds if there is no field.
+    fn refresh(&mut self, field: Option<(&PotentialField, u64)>) {
         match field {
-            Some(f) if f.cells().len() == cells => {
-                if self.key != Some(key) || self.potential.len() != cells {
+            Some((f, key)) => {
+                if self.key != Some(key) || self.potential.len() != f.cells().len() {
                     self.potential.clear();
                     self.potential.extend(f.cells().iter().map(|c| c.potential));
                     self.state.clear();
@@ -43,7 +42,7 @@ impl FieldBuffers {
                     self.key = Some(key);
                 }
             }
-            _ => {
+            None => {
                 self.potential.clear();
                 self.state.clear();
                 self.key = None;
@@ -85,6 +84,17 @@ pub fn caption(system: &System) -> String {
     format!("t = {:.1} s  {}", system.time(), system.status())
 }
 
+/// The potential field `system` shows, with its key (LocalPathPlanning's plan count): none
+/// before a plan, or when it does not have a cell per map cell (a field of another map,
+/// just after a load).
+pub(super) fn shown_field(system: &System) -> Option<(&PotentialField, u64)> {
+    let wiring = system.wiring();
+    let cells = wiring.map().map(|m| m.width() * m.height())?;
+    let lpp = wiring.local_path_planning();
+    let field = lpp.potential_field().filter(|f| f.cells().len() == cells)?;
+    Some((field, lpp.plan_count()))
+}
+
 /// The scene of `system` now with `layers` and `caption`; `None` before a map is loaded.
 /// The field's key is LocalPathPlanning's plan count, the map's key the wiring's, so the
 /// renderer recolours its cached layers only when they change.
@@ -94,15 +104,21 @@ pub fn scene_of<'a>(
     caption: &'a str,
     layers: Layers,
 ) -> Option<Scene<'a>> {
+    buffers.refresh(shown_field(system));
+    let buffers: &'a FieldBuffers = buffers;
+    scene_with(system, buffers.view(), caption, layers)
+}
+
+/// [`scene_of`] with `field` as the potential field.
+pub(super) fn scene_with<'a>(
+    system: &'a System,
+    field: Option<FieldView<'a>>,
+    caption: &'a str,
+    layers: Layers,
+) -> Option<Scene<'a>> {
     let wiring = system.wiring();
     let map = wiring.map()?;
     let lpp: &LocalPathPlanning = wiring.local_path_planning();
-    buffers.refresh(
-        lpp.potential_field(),
-        lpp.plan_count(),
-        map.width() * map.height(),
-    );
-    let buffers: &'a FieldBuffers = buffers;
     let local_target = lpp.local_target().map(|t| {
         let (x, y) = map.cell_center(t.cell);
         Pose::new(x, y, t.heading)
@@ -122,7 +138,7 @@ pub fn scene_of<'a>(
         map,
         map_key: wiring.map_key(),
         dmin: lpp.params().dmin,
-        field: buffers.view(),
+        field,
         global_path: mission.route(),
         local_path: lpp.merged_path(),
         control_points: lpp.control_points().map_or(&[], |c| &c.points[..]),

@@ -15,7 +15,7 @@ use tiny_skia::Pixmap;
 use super::colour::Rgba;
 use super::draw::{self, Px};
 use super::frame::Frame;
-use super::of_system::{FieldBuffers, ghost_of, scene_of};
+use super::of_system::{FieldBuffers, ghost_of, scene_of, scene_with, shown_field};
 use super::panel::{self, PanelInput, TextArea};
 use super::raster::{
     Base, Bounds, Heat, LogBins, Recoloured, Region, draw_map, fill_rect, viridis,
@@ -359,13 +359,7 @@ impl Renderer {
             }
         }
         let view = self.layout.view_with(map, self.camera);
-        let key = BackgroundKey {
-            map: map_key,
-            dmin: scene.dmin.to_bits(),
-            field: field.map(|f| f.key),
-            layers: scene.layers,
-            camera: self.camera,
-        };
+        let key = self.background_key_of(scene, field.map(|f| f.key));
         if self.background_key != Some(key) {
             self.update_background(scene, &view, key, field.is_some());
         }
@@ -383,6 +377,35 @@ impl Renderer {
         self.draw_overlays(scene, &view);
         self.draw_panel_text(scene);
         Ok(&self.frame)
+    }
+
+    /// What the background of `scene` with the potential field `field` (its key, if the
+    /// heat map shows one) is drawn from.
+    fn background_key_of(&self, scene: &Scene<'_>, field: Option<u64>) -> BackgroundKey {
+        BackgroundKey {
+            map: MapKey::of(scene.map, scene.map_key),
+            dmin: scene.dmin.to_bits(),
+            field,
+            layers: scene.layers,
+            camera: self.camera,
+        }
+    }
+
+    /// Whether drawing `system` with `layers` now ([`Renderer::render_system`]) would start
+    /// from the layers kept from the last frame — the map, the heat map, the paths and the
+    /// control points as drawn then — and draw only the robot, its trail and the marks
+    /// again: `false` after a new plan, a `MapUpdate`, a new view or layer set, or before the
+    /// first frame. Converts nothing: a caller that spreads expensive work over frames (the
+    /// page) asks it before drawing.
+    pub fn draws_from_cache(&self, system: &System, layers: Layers) -> bool {
+        let Some(scene) = scene_with(system, None, "", layers) else {
+            return false;
+        };
+        let field = shown_field(system)
+            .map(|(_, key)| key)
+            .filter(|_| layers.heat_map);
+        self.background_key == Some(self.background_key_of(&scene, field))
+            && self.plan_drawn.shows(&scene)
     }
 
     /// Brings the background up to `key`, with the base colours it is drawn from: after a
