@@ -137,6 +137,11 @@ async function boot() {
     if (!drawOwed) app.stage.draw();
     const t1 = performance.now();
     if (guard.crashed) return false;
+    // What reads the page's layout (where the robot is on screen) goes before the panels
+    // write to the page: the layout of the last frame is still valid then, and is not made
+    // again in the middle of this one.
+    legend.update(app.stage.robotBox);
+    app.notice.update(app.stage.robotBox);
     frameTimes.push(t1 - t0);
     if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
     simTime.textContent = `${demo.time_s().toFixed(3)} s`;
@@ -150,9 +155,7 @@ async function boot() {
     telemetry.update();
     timeline.update();
     toolbar.update();
-    legend.update(app.stage.robotBox);
     exercise.update(t1);
-    app.notice.update(app.stage.robotBox);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();
     params.update(now, tabs.visible('params'));
