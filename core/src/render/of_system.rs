@@ -84,10 +84,13 @@ pub fn caption(system: &System) -> String {
     format!("t = {:.1} s  {}", system.time(), system.status())
 }
 
-/// The potential field `system` shows, with its key (LocalPathPlanning's plan count): none
-/// before a plan, or when it does not have a cell per map cell (a field of another map,
-/// just after a load).
-pub(super) fn shown_field(system: &System) -> Option<(&PotentialField, u64)> {
+/// The potential field `system` shows with `layers`, with its key (LocalPathPlanning's
+/// plan count): none with the heat map off, before a plan, or when it does not have a cell
+/// per map cell (a field of another map, just after a load).
+pub(super) fn shown_field(system: &System, layers: Layers) -> Option<(&PotentialField, u64)> {
+    if !layers.heat_map {
+        return None;
+    }
     let wiring = system.wiring();
     let cells = wiring.map().map(|m| m.width() * m.height())?;
     let lpp = wiring.local_path_planning();
@@ -97,14 +100,15 @@ pub(super) fn shown_field(system: &System) -> Option<(&PotentialField, u64)> {
 
 /// The scene of `system` now with `layers` and `caption`; `None` before a map is loaded.
 /// The field's key is LocalPathPlanning's plan count, the map's key the wiring's, so the
-/// renderer recolours its cached layers only when they change.
+/// renderer recolours its cached layers only when they change. The field is converted only
+/// when the heat map shows it.
 pub fn scene_of<'a>(
     system: &'a System,
     buffers: &'a mut FieldBuffers,
     caption: &'a str,
     layers: Layers,
 ) -> Option<Scene<'a>> {
-    buffers.refresh(shown_field(system));
+    buffers.refresh(shown_field(system, layers));
     let buffers: &'a FieldBuffers = buffers;
     scene_with(system, buffers.view(), caption, layers)
 }

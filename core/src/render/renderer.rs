@@ -346,11 +346,10 @@ impl Renderer {
     pub fn render(&mut self, scene: &Scene<'_>) -> Result<&Frame, RenderError> {
         scene.validate()?;
         let map = scene.map;
-        let map_key = MapKey::of(map, scene.map_key);
         let field = scene.field.filter(|_| scene.layers.heat_map);
         if let Some(f) = &field {
             let key = HeatKey {
-                map: map_key.shape,
+                map: MapShape::of(map),
                 field: f.key,
             };
             if self.heat.as_ref().map(|h| h.0) != Some(key) {
@@ -401,9 +400,7 @@ impl Renderer {
         let Some(scene) = scene_with(system, None, "", layers) else {
             return false;
         };
-        let field = shown_field(system)
-            .map(|(_, key)| key)
-            .filter(|_| layers.heat_map);
+        let field = shown_field(system, layers).map(|(_, key)| key);
         self.background_key == Some(self.background_key_of(&scene, field))
             && self.plan_drawn.shows(&scene)
     }
