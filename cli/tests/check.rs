@@ -111,7 +111,7 @@ fn fault_replay(recover: bool) -> PathBuf {
     while matches!(
         s.exercise().unwrap().verdict,
         Verdict::Waiting | Verdict::Running
-    ) && s.system().time() < 130.0
+    ) && s.system().time() < 160.0
     {
         s.step_ticks(1_000);
     }

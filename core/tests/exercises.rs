@@ -136,6 +136,19 @@ fn fault_recovery_with_reset_and_activate() {
         ]
     };
     passed(name, &check(name, None, &reset_activate(10.0)));
+    // At a student's pace: Reset 12 s after the fault, Activate a second later. The robot
+    // coasted meanwhile (zero torque), so it arrives later than after a prompt recovery,
+    // but within the time the task gives.
+    let at_a_students_pace = |reset: f64| {
+        let mut inputs = reset_activate(reset);
+        inputs[1].at += 1.0;
+        inputs
+    };
+    passed(name, &check(name, None, &at_a_students_pace(20.0)));
+    // Waiting 40 s is too late: the robot arrives, but not within the task's time.
+    failed(name, &check(name, None, &at_a_students_pace(48.0)), |c| {
+        matches!(c, Check::Arrived { .. })
+    });
     // Reset alone leaves DriveControl Inactive: the robot never moves again.
     let reset_only = &reset_activate(10.0)[..1];
     failed(name, &check(name, None, reset_only), |c| {
