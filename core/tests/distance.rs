@@ -190,7 +190,7 @@ fn set_map_refuses_bad_input_naming_the_problem() {
     );
     refused(
         GridMap::from_map_data(&[0; 4], 2, 2, 0.0),
-        "GridSize 0 must be positive",
+        "GridSize 0 m must lie between 0.0001 m and 1000 m",
     );
     refused(GridMap::from_map_data(&[0; 4], 2, 2, -0.5), "GridSize -0.5");
     refused(

@@ -195,11 +195,11 @@ fn bad_ros_input_is_refused_with_a_reason() {
         ),
         "{e:?}"
     );
-    assert!(text(e).contains("cannot decode the PGM/PNM image"));
+    assert!(text(e).contains("`m.pgm` is truncated"));
     let no_resolution = YAML.replace("resolution: 0.5\n", "");
     assert!(ros_err(&no_resolution, &tiny_pgm()).contains("missing field `resolution`"));
     let zero = YAML.replace("resolution: 0.5", "resolution: 0");
-    assert!(ros_err(&zero, &tiny_pgm()).contains("`resolution` 0"));
+    assert!(ros_err(&zero, &tiny_pgm()).starts_with("GridSize 0 m must lie between"));
     let origin2 = YAML.replace("[1.0, 2.0, 0.0]", "[1.0, 2.0]");
     assert!(ros_err(&origin2, &tiny_pgm()).contains("`origin` must have 3 elements"));
     let no_negate = YAML.replace("negate: 0\n", "");
@@ -212,7 +212,7 @@ fn bad_ros_input_is_refused_with_a_reason() {
     assert!(ros_err(&empty_image, &tiny_pgm()).contains("`image` is empty"));
     assert_eq!(
         ros_err(YAML, b"GIF89a...."),
-        "ROS map image: neither a PGM nor a PNG image"
+        "ROS map image: `m.pgm` is neither a PGM nor a PNG image"
     );
     let not_negate = YAML.replace("negate: 0", "negate: maybe");
     assert!(ros_err(&not_negate, &tiny_pgm()).contains("0, 1, true or false"));
@@ -357,4 +357,301 @@ fn movingai_scen_reads_both_versions_tabs_and_spaces() {
     assert!(e("version 1\n0 a.map 4 4 1 1 1\n").contains("(line 2): expected 9 fields, found 7"));
     assert!(e("version 1\n0 a.map 4 4 4 1 1 1 1\n").contains("start (4, 1) is outside"));
     assert!(e("version 1\n0 a.map 4 4 1 1 1 1 x\n").contains("optimal length `x`"));
+}
+
+// ---------------------------------------------------------------- what every reader checks
+
+/// spec §2 Decision (geometry): `GridSize` within 1e-4 ..= 1e3 m; the origin and the far
+/// corner (origin + size · GridSize) finite and within ±1e9 m. One check,
+/// [`GridMap::check_geometry`], made by the constructors and every reader; the error names
+/// the value and the limits.
+#[test]
+fn a_map_geometry_outside_the_limits_is_refused_by_every_way_a_map_is_made() {
+    // The limits themselves are accepted.
+    for g in [1e-4, 0.05, 1e3] {
+        assert_eq!(GridMap::check_geometry(4, 3, g, (0.0, 0.0)), Ok(()), "{g}");
+    }
+    assert_eq!(
+        GridMap::check_geometry(1, 1, 1.0, (-1e9, 1e9 - 1.0)),
+        Ok(())
+    );
+    for g in [
+        1e-12,
+        9.9e-5,
+        1000.5,
+        1e9,
+        0.0,
+        -1.0,
+        f64::NAN,
+        f64::INFINITY,
+    ] {
+        let e = GridMap::check_geometry(4, 3, g, (0.0, 0.0)).unwrap_err();
+        assert!(matches!(e, MapError::BadGridSize { value, .. } if value.to_bits() == g.to_bits()));
+    }
+    assert_eq!(
+        text(GridMap::check_geometry(4, 3, 1e-12, (0.0, 0.0)).unwrap_err()),
+        "GridSize 1e-12 m must lie between 0.0001 m and 1000 m"
+    );
+    assert_eq!(
+        text(GridMap::check_geometry(4, 3, 1e9, (0.0, 0.0)).unwrap_err()),
+        "GridSize 1000000000 m must lie between 0.0001 m and 1000 m"
+    );
+    // The origin, or the far corner, too far out or not finite.
+    let origin = |w, h, g, o| GridMap::check_geometry(w, h, g, o).unwrap_err();
+    assert_eq!(
+        text(origin(4, 3, 0.5, (1e300, 0.0))),
+        "map origin (1e300, 0) and far corner (1e300, 1.5) must be finite and within ±1000000000 m"
+    );
+    assert!(matches!(
+        origin(4, 3, 0.5, (0.0, f64::NAN)),
+        MapError::BadOrigin { x, y, limit, .. } if x == 0.0 && y.is_nan() && limit == 1e9
+    ));
+    // Origin within the limit, far corner beyond it: 10 cells of 1 m from 1e9 − 5.
+    assert!(matches!(
+        origin(10, 1, 1.0, (1e9 - 5.0, 0.0)),
+        MapError::BadOrigin { far_x, far_y, .. } if far_x == 1e9 + 5.0 && far_y == 1.0
+    ));
+    assert!(matches!(
+        origin(1, 1, 1.0, (f64::NEG_INFINITY, 0.0)),
+        MapError::BadOrigin { .. }
+    ));
+
+    // The constructors.
+    assert!(matches!(
+        GridMap::new(2, 2, 1e-12, (0.0, 0.0), vec![0; 4]),
+        Err(MapError::BadGridSize { .. })
+    ));
+    assert!(matches!(
+        GridMap::from_map_data(&[0; 4], 2, 2, 1e9),
+        Err(MapError::BadGridSize { .. })
+    ));
+    assert!(matches!(
+        GridMap::new(2, 2, 1.0, (1e300, 0.0), vec![0; 4]),
+        Err(MapError::BadOrigin { .. })
+    ));
+    // The ROS YAML (before the image is read) and the image's size with it.
+    let ros = |yaml: &str| ros::load(yaml, &tiny_pgm(), &RosLoadOptions::default());
+    for resolution in ["1e-12", "1e9", ".inf", "0"] {
+        let yaml = YAML.replace("resolution: 0.5", &format!("resolution: {resolution}"));
+        assert!(
+            matches!(ros(&yaml), Err(MapError::BadGridSize { .. })),
+            "{resolution}: {:?}",
+            ros(&yaml)
+        );
+        assert!(matches!(
+            ros::parse_yaml(&yaml),
+            Err(MapError::BadGridSize { .. })
+        ));
+    }
+    for o in [
+        "[1e300, 0, 0]",
+        "[0, -1e10, 0]",
+        "[.nan, 0, 0]",
+        "[1e400, 0, 0]",
+    ] {
+        let yaml = YAML.replace("[1.0, 2.0, 0.0]", o);
+        assert!(matches!(ros(&yaml), Err(MapError::BadOrigin { .. })), "{o}");
+    }
+    // A yaw that is not finite is the YAML's own problem.
+    let yaw = YAML.replace("[1.0, 2.0, 0.0]", "[1.0, 2.0, .inf]");
+    assert!(ros_err(&yaw, &tiny_pgm()).contains("yaw"));
+    // Far corner beyond the limit once the image's size is known: 3 × 2 pixels of 1000 m.
+    let far = YAML
+        .replace("resolution: 0.5", "resolution: 1000")
+        .replace("[1.0, 2.0, 0.0]", "[999998000, 0, 0]");
+    assert!(ros::parse_yaml(&far).is_ok());
+    assert!(matches!(
+        ros(&far),
+        Err(MapError::BadOrigin { far_x, .. }) if far_x == 1_000_001_000.0
+    ));
+    // The JSON map.
+    let json = |g: &str, o: &str| {
+        json::load(&format!(
+            r#"{{"width": 1, "height": 1, "grid_size": {g}, "origin": {o}, "rows": ["."]}}"#
+        ))
+    };
+    assert!(json("0.5", "[0, 0]").is_ok());
+    assert!(matches!(
+        json("1e-12", "[0, 0]"),
+        Err(MapError::BadGridSize { .. })
+    ));
+    assert!(matches!(
+        json("1e9", "[0, 0]"),
+        Err(MapError::BadGridSize { .. })
+    ));
+    assert!(matches!(
+        json("1", "[1e300, 0]"),
+        Err(MapError::BadOrigin { .. })
+    ));
+    // The geometry is checked before the rows are: a bad grid size is reported as such.
+    assert!(matches!(
+        json::load(r#"{"width": 2, "height": 1, "grid_size": 1e-12, "rows": ["?"]}"#),
+        Err(MapError::BadGridSize { .. })
+    ));
+}
+
+/// A text file saved by Windows Notepad starts with a UTF-8 byte-order mark (EF BB BF):
+/// every text format reads it as without.
+#[test]
+fn a_leading_byte_order_mark_is_skipped_by_every_text_reader() {
+    let bom = |s: &str| format!("\u{feff}{s}");
+    let map = "type octile\nheight 2\nwidth 3\nmap\n@.T\n..S\n";
+    assert_eq!(
+        movingai::load_map(&bom(map)).unwrap(),
+        movingai::load_map(map).unwrap()
+    );
+    let scen = "version 1\n0\tarena.map\t49\t49\t1\t11\t1\t12\t1\n";
+    assert_eq!(
+        movingai::load_scen(&bom(scen)).unwrap(),
+        movingai::load_scen(scen).unwrap()
+    );
+    let json_map = r#"{"width": 2, "height": 1, "grid_size": 0.5, "rows": [".#"]}"#;
+    assert_eq!(
+        json::load(&bom(json_map)).unwrap(),
+        json::load(json_map).unwrap()
+    );
+    assert_eq!(
+        ros::parse_yaml(&bom(YAML)).unwrap(),
+        ros::parse_yaml(YAML).unwrap()
+    );
+    let r = ros::load(&bom(YAML), &tiny_pgm(), &RosLoadOptions::default()).unwrap();
+    assert_eq!(r.map.cells(), &[0, 0, 1, 1, 0, 1]);
+    // One mark only: a second is the file's content, refused as such.
+    assert!(movingai::load_map(&bom(&bom(map))).is_err());
+}
+
+/// The native loaders read a file with a byte-order mark as the text readers do.
+#[test]
+fn files_with_a_byte_order_mark_load() {
+    let dir = std::env::temp_dir().join(format!("rtnav-bom-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, text: &str| {
+        let path = dir.join(name);
+        std::fs::write(&path, format!("\u{feff}{text}")).unwrap();
+        path
+    };
+    let m = movingai::load_map_file(write("a.map", "type octile\nheight 1\nwidth 2\nmap\n.@\n"));
+    assert_eq!(m.unwrap().cells(), &[0, 1]);
+    let s = movingai::load_scen_file(write("a.scen", "version 1\n0 a.map 2 1 0 0 0 0 0\n"));
+    assert_eq!(s.unwrap().len(), 1);
+    let j = json::load_file(write(
+        "a.json",
+        r##"{"width": 1, "height": 1, "grid_size": 1, "rows": ["#"]}"##,
+    ));
+    assert_eq!(j.unwrap().cells(), &[1]);
+    std::fs::write(dir.join("m.pgm"), tiny_pgm()).unwrap();
+    let r = ros::load_file(write("m.yaml", YAML), &RosLoadOptions::default());
+    assert_eq!(r.unwrap().map.width(), 3);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// An image shorter than its header says is reported as truncated, naming the file (the
+/// YAML's `image`) and, for a binary PGM, the bytes of pixel data expected and found.
+#[test]
+fn a_truncated_image_is_reported_as_truncated() {
+    let mut pgm = tiny_pgm();
+    pgm.truncate(pgm.len() - 2);
+    assert_eq!(
+        ros_err(YAML, &pgm),
+        "ROS map image: `m.pgm` is truncated: its header gives 3×2 pixels, \
+         6 bytes of pixel data, but the file holds 4"
+    );
+    // 16-bit samples: two bytes each.
+    let mut wide = b"P5\n2 1\n65535\n".to_vec();
+    wide.extend_from_slice(&[0, 0, 255]);
+    assert!(
+        ros_err(YAML, &wide).ends_with("2×1 pixels, 4 bytes of pixel data, but the file holds 3"),
+        "{}",
+        ros_err(YAML, &wide)
+    );
+    // A P4 bitmap packs 8 pixels a byte: 9 × 2 pixels are 2 bytes a row.
+    let bitmap = b"P4\n9 2\n\x00\x00\x00";
+    assert!(
+        ros_err(YAML, bitmap).ends_with("9×2 pixels, 4 bytes of pixel data, but the file holds 3"),
+        "{}",
+        ros_err(YAML, bitmap)
+    );
+    // Bytes beyond the pixel data are not a truncation.
+    let mut longer = tiny_pgm();
+    longer.push(0);
+    assert!(ros::load(YAML, &longer, &RosLoadOptions::default()).is_ok());
+    // An ASCII PGM or PBM that ends early: samples counted.
+    let ascii = b"P2\n3 2\n255\n0 254 205\n254\n";
+    assert!(
+        ros_err(YAML, ascii).ends_with(
+            "`m.pgm` is truncated: its header gives 3×2 pixels, 6 samples, but the file holds 4"
+        ),
+        "{}",
+        ros_err(YAML, ascii)
+    );
+    let plain_bitmap = b"P1\n3 2\n010\n1";
+    assert!(ros_err(YAML, plain_bitmap).ends_with("3×2 pixels, 6 samples, but the file holds 4"));
+    // A header cut short.
+    for cut in [&b"P5\n3 2\n"[..], b"P5\n3", b"P5"] {
+        let e = ros_err(YAML, cut);
+        assert!(
+            e.starts_with("ROS map image: `m.pgm` is truncated"),
+            "{cut:?}: {e}"
+        );
+    }
+    // A PNG cut short, in its pixel data and in its header.
+    let png = tiny_png();
+    let png_yaml = YAML.replace("m.pgm", "m.png");
+    for cut in [png.len() - 20, 40, 20] {
+        assert_eq!(
+            ros_err(&png_yaml, &png[..cut]),
+            "ROS map image: `m.png` is truncated: the file ends before the image does",
+            "{cut}"
+        );
+    }
+}
+
+/// A MovingAI scenario's `grid_size` and `origin` are checked when the scenario is read, by
+/// the map's one rule ([`GridMap::check_geometry`]), before its map is loaded.
+#[test]
+fn a_movingai_scenario_geometry_is_checked_by_the_map_rule() {
+    let arena = include_str!("../../fixtures/scenarios/arena.json");
+    let read = |from: &str, to: &str| {
+        rtnav::system::Scenario::from_json(&arena.replace(from, to)).map(|_| ())
+    };
+    assert_eq!(read("", ""), Ok(()));
+    let reason = |r: Result<(), rtnav::errors::ScenarioError>| match r {
+        Err(rtnav::errors::ScenarioError::Scenario { reason, .. }) => reason,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(
+        reason(read("\"grid_size\": 0.5", "\"grid_size\": 1e-12")),
+        "map: GridSize 1e-12 m must lie between 0.0001 m and 1000 m"
+    );
+    assert!(reason(read("\"grid_size\": 0.5", "\"grid_size\": 5000")).contains("GridSize 5000 m"));
+    assert!(
+        reason(read(
+            "\"grid_size\": 0.5",
+            "\"grid_size\": 0.5, \"origin\": [1e300, 0]"
+        ))
+        .starts_with("map: map origin (1e300, 0)")
+    );
+}
+
+/// A `.map` header that gives a key twice is refused (which one the file means cannot be
+/// told), and a size beyond the platform's word is the size error on every target.
+#[test]
+fn a_movingai_header_with_a_key_twice_or_a_huge_size_is_refused() {
+    let e = |s: &str| text(movingai::load_map(s).unwrap_err());
+    assert_eq!(
+        e("type octile\nheight 1\nwidth 2\nheight 2\nmap\n..\n..\n"),
+        "MovingAI .map (line 4): `height` is given twice in the header"
+    );
+    assert!(
+        e("type octile\ntype octile\nheight 1\nwidth 1\nmap\n.\n")
+            .contains("`type` is given twice")
+    );
+    assert!(e("width 1\ntype octile\nheight 1\nwidth 1\nmap\n.\n").contains("(line 4): `width`"));
+    assert!(matches!(
+        movingai::load_map("type octile\nheight 1\nwidth 5000000000\nmap\n"),
+        Err(MapError::TooLarge {
+            width: 5_000_000_000,
+            ..
+        })
+    ));
 }

@@ -107,7 +107,7 @@ fn json_map_with_a_huge_width_is_refused_before_anything_is_allocated() {
         match result {
             Err(MapError::TooLarge { cells, limit, .. }) => {
                 assert_eq!(limit, MAX_CELLS);
-                assert_eq!(cells, width, "width {text}: cells as asked (saturated)");
+                assert_eq!(cells, width.to_string(), "width {text}: cells as asked");
             }
             other => panic!("width {text}: expected TooLarge, got {other:?}"),
         }
@@ -183,10 +183,7 @@ fn check_size_is_the_one_size_check_of_every_reader() {
     ));
     assert!(matches!(
         GridMap::check_size(u64::MAX, 2),
-        Err(MapError::TooLarge {
-            cells: u64::MAX,
-            ..
-        })
+        Err(MapError::TooLarge { cells, .. }) if cells == "36893488147419103230"
     ));
     assert!(matches!(
         GridMap::check_size(3, 0),

@@ -16,28 +16,47 @@ pub enum MapError {
     /// More cells than the map size limit.
     #[error("map of {width}×{height} = {cells} cells exceeds the limit of {limit} cells")]
     TooLarge {
-        /// Cells in x.
-        width: usize,
-        /// Cells in y.
-        height: usize,
-        /// width × height.
-        cells: u64,
+        /// Cells in x, as given.
+        width: u64,
+        /// Cells in y, as given.
+        height: u64,
+        /// width × height, exactly, in decimal digits: two 64-bit sizes multiply to up to
+        /// 128 bits, which neither a JSON number nor JavaScript holds exactly.
+        cells: String,
         /// The limit.
         limit: usize,
     },
-    /// `GridSize` zero, negative or not finite.
-    #[error("GridSize {value} must be positive and finite")]
+    /// `GridSize` outside the limits, or not a number (spec §2 Decision "geometry").
+    #[error("GridSize {} m must lie between {min} m and {max} m", number(*value))]
     BadGridSize {
-        /// The value given.
+        /// The value given \[m\].
         value: f64,
+        /// The smallest accepted, [`MIN_GRID_SIZE`](crate::map::MIN_GRID_SIZE).
+        min: f64,
+        /// The largest accepted, [`MAX_GRID_SIZE`](crate::map::MAX_GRID_SIZE).
+        max: f64,
     },
-    /// An origin coordinate that is not finite.
-    #[error("map origin ({x}, {y}) must be finite")]
+    /// An origin, or a far corner (origin + size · `GridSize`), that is not finite or lies
+    /// beyond the coordinate limit (spec §2 Decision "geometry").
+    #[error(
+        "map origin ({}, {}) and far corner ({}, {}) must be finite and within ±{limit} m",
+        number(*x),
+        number(*y),
+        number(*far_x),
+        number(*far_y)
+    )]
     BadOrigin {
-        /// x in metres.
+        /// Origin x \[m\].
         x: f64,
-        /// y in metres.
+        /// Origin y \[m\].
         y: f64,
+        /// The far corner's x: x + width · GridSize \[m\].
+        far_x: f64,
+        /// The far corner's y: y + height · GridSize \[m\].
+        far_y: f64,
+        /// The largest distance from 0 accepted on either axis,
+        /// [`MAX_COORDINATE`](crate::map::MAX_COORDINATE) \[m\].
+        limit: f64,
     },
     /// `MapData` of the wrong length.
     #[error("MapData has {len} cells, expected MapLengthX × MapLengthY = {expected}")]
@@ -108,6 +127,17 @@ pub enum MapError {
         /// The nanoseconds given.
         nsec: u32,
     },
+}
+
+/// A number as a person would write it: plainly, or in exponent form (`1e300`, `1e-12`)
+/// where plain digits would run past 15 places.
+fn number(v: f64) -> String {
+    let size = v.abs();
+    if v.is_finite() && size != 0.0 && !(1e-6..1e15).contains(&size) {
+        format!("{v:e}")
+    } else {
+        v.to_string()
+    }
 }
 
 fn at_line(line: Option<usize>) -> String {

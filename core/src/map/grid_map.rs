@@ -13,6 +13,17 @@ use crate::rtc::Time;
 /// error instead of an out-of-memory.
 pub const MAX_CELLS: usize = 16 * 1024 * 1024;
 
+/// The smallest `GridSize` accepted: 0.1 mm (spec §2 Decision "geometry").
+pub const MIN_GRID_SIZE: f64 = 1e-4;
+
+/// The largest `GridSize` accepted: 1 km (spec §2 Decision "geometry").
+pub const MAX_GRID_SIZE: f64 = 1e3;
+
+/// How far from 0 a map's origin and far corner may lie on either axis: 10⁹ m (spec §2
+/// Decision "geometry"), so that world coordinates, distances and their squares stay far
+/// from overflow.
+pub const MAX_COORDINATE: f64 = 1e9;
+
 /// How far above `dmin` an obstacle distance may be and still count as "within `dmin`":
 /// 1 nm. Distances are `g·√k` in floating point, so a cell exactly `dmin` away can come out
 /// a few ulps above it (3 × 0.1 = 0.30000000000000004); without this margin such a cell is
@@ -83,8 +94,9 @@ fn fresh_id() -> u64 {
 const CHANGES_KEPT: usize = 64;
 
 /// An occupancy grid. A `GridMap` that exists is valid (spec §2 Decision): dimensions ≥ 1,
-/// at most [`MAX_CELLS`] cells, a positive finite `GridSize`, a finite origin, and every cell
-/// 0 (free) or 1 (obstacle).
+/// at most [`MAX_CELLS`] cells, the geometry [`GridMap::check_geometry`] accepts (`GridSize`
+/// within [`MIN_GRID_SIZE`] ..= [`MAX_GRID_SIZE`], origin and far corner within
+/// ±[`MAX_COORDINATE`]), and every cell 0 (free) or 1 (obstacle).
 ///
 /// **Copies share** (spec §5: every component keeps its own map, so one `MapUpdate` reaches
 /// five copies): the cells and distances are held behind an [`Arc`] and copied only when a
@@ -205,21 +217,12 @@ impl GridMap {
         origin: (f64, f64),
         cells: Vec<u8>,
     ) -> Result<Self, MapError> {
-        let side = |n: usize| i64::try_from(n).unwrap_or(i64::MAX);
-        Self::check_shape(side(width), side(height))?;
-        if !(grid_size.is_finite() && grid_size > 0.0) {
-            return Err(MapError::BadGridSize { value: grid_size });
-        }
-        if !(origin.0.is_finite() && origin.1.is_finite()) {
-            return Err(MapError::BadOrigin {
-                x: origin.0,
-                y: origin.1,
-            });
-        }
-        if cells.len() != width * height {
+        let count = Self::check_size(width as u64, height as u64)?;
+        Self::check_geometry(width, height, grid_size, origin)?;
+        if cells.len() != count {
             return Err(MapError::DataLength {
                 len: cells.len(),
-                expected: width * height,
+                expected: count,
             });
         }
         if let Some((index, &v)) = cells.iter().enumerate().find(|(_, v)| **v > 1) {
@@ -248,12 +251,21 @@ impl GridMap {
         map_length_y: i32,
         grid_size: f64,
     ) -> Result<Self, MapError> {
-        Self::check_shape(i64::from(map_length_x), i64::from(map_length_y))?;
-        let (w, h) = (map_length_x as usize, map_length_y as usize);
-        if map_data.len() != w * h {
+        let side = |axis, n: i32| {
+            u64::try_from(n).map_err(|_| MapError::BadDimension {
+                axis,
+                value: i64::from(n),
+            })
+        };
+        let (w, h) = (
+            side("MapLengthX", map_length_x)?,
+            side("MapLengthY", map_length_y)?,
+        );
+        let count = Self::check_size(w, h)?;
+        if map_data.len() != count {
             return Err(MapError::DataLength {
                 len: map_data.len(),
-                expected: w * h,
+                expected: count,
             });
         }
         let mut cells = Vec::with_capacity(map_data.len());
@@ -269,7 +281,7 @@ impl GridMap {
                 }
             }
         }
-        Self::new(w, h, grid_size, (0.0, 0.0), cells)
+        Self::new(w as usize, h as usize, grid_size, (0.0, 0.0), cells)
     }
 
     /// The check every map reader makes on the size a file tells it, before it allocates
@@ -277,50 +289,54 @@ impl GridMap {
     /// `width × height` at most [`MAX_CELLS`], computed without overflow. Returns the cell
     /// count.
     pub fn check_size(width: u64, height: u64) -> Result<usize, MapError> {
-        let signed = |n: u64| i64::try_from(n).unwrap_or(i64::MAX);
-        if width < 1 {
-            return Err(MapError::BadDimension {
-                axis: "MapLengthX",
-                value: signed(width),
-            });
+        for (axis, n) in [("MapLengthX", width), ("MapLengthY", height)] {
+            if n < 1 {
+                return Err(MapError::BadDimension { axis, value: 0 });
+            }
         }
-        if height < 1 {
-            return Err(MapError::BadDimension {
-                axis: "MapLengthY",
-                value: signed(height),
-            });
-        }
-        match width.checked_mul(height) {
-            Some(cells) if cells <= MAX_CELLS as u64 => Ok(cells as usize),
-            cells => Err(MapError::TooLarge {
-                width: usize::try_from(width).unwrap_or(usize::MAX),
-                height: usize::try_from(height).unwrap_or(usize::MAX),
-                cells: cells.unwrap_or(u64::MAX),
+        // Exact in 128 bits, so the error says the true product.
+        let cells = u128::from(width) * u128::from(height);
+        if cells > MAX_CELLS as u128 {
+            return Err(MapError::TooLarge {
+                width,
+                height,
+                cells: cells.to_string(),
                 limit: MAX_CELLS,
-            }),
+            });
         }
+        Ok(cells as usize)
     }
 
-    fn check_shape(width: i64, height: i64) -> Result<(), MapError> {
-        if width < 1 {
-            return Err(MapError::BadDimension {
-                axis: "MapLengthX",
-                value: width,
+    /// The check every way of making a map makes on its geometry (spec §2 Decision
+    /// "geometry"): `grid_size` within [`MIN_GRID_SIZE`] ..= [`MAX_GRID_SIZE`] metres, and
+    /// the origin and the far corner (`origin + (width, height) · grid_size`) finite and
+    /// within ±[`MAX_COORDINATE`] metres on both axes. A reader that does not know the size
+    /// yet checks a 1 × 1 map; the full check follows when the map is made.
+    pub fn check_geometry(
+        width: usize,
+        height: usize,
+        grid_size: f64,
+        origin: (f64, f64),
+    ) -> Result<(), MapError> {
+        if !(MIN_GRID_SIZE..=MAX_GRID_SIZE).contains(&grid_size) {
+            return Err(MapError::BadGridSize {
+                value: grid_size,
+                min: MIN_GRID_SIZE,
+                max: MAX_GRID_SIZE,
             });
         }
-        if height < 1 {
-            return Err(MapError::BadDimension {
-                axis: "MapLengthY",
-                value: height,
-            });
-        }
-        let cells = (width as u64).saturating_mul(height as u64);
-        if cells > MAX_CELLS as u64 {
-            return Err(MapError::TooLarge {
-                width: width as usize,
-                height: height as usize,
-                cells,
-                limit: MAX_CELLS,
+        let far = (
+            origin.0 + width as f64 * grid_size,
+            origin.1 + height as f64 * grid_size,
+        );
+        let within = |v: f64| v.abs() <= MAX_COORDINATE;
+        if ![origin.0, origin.1, far.0, far.1].into_iter().all(within) {
+            return Err(MapError::BadOrigin {
+                x: origin.0,
+                y: origin.1,
+                far_x: far.0,
+                far_y: far.1,
+                limit: MAX_COORDINATE,
             });
         }
         Ok(())
@@ -646,6 +662,67 @@ mod tests {
         assert_eq!(m.version(), tm);
         assert!(m.is_obstacle(1, 0));
         assert_eq!(m.obstacle_distance((0, 1)), 1.0);
+    }
+
+    /// The size error says the true product `width × height` and the sizes as given: not a
+    /// saturated or wrapped count, not a width clamped to `i64::MAX` or to a 32-bit `usize`
+    /// (the browser's).
+    #[test]
+    fn too_large_says_width_times_height() {
+        let too_large = |e: MapError| match e {
+            MapError::TooLarge {
+                width,
+                height,
+                cells,
+                ..
+            } => (width, height, cells.parse::<u128>().unwrap()),
+            other => panic!("{other:?}"),
+        };
+        // 2⁶⁴ − 1 by 2 needs 65 bits.
+        let e = GridMap::check_size(u64::MAX, 2).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "map of 18446744073709551615×2 = 36893488147419103230 cells exceeds the limit of \
+             16777216 cells"
+        );
+        assert_eq!(
+            crate::Error::from(e).detail().fields["cells"],
+            "36893488147419103230"
+        );
+        assert_eq!(
+            too_large(GridMap::check_size(u64::MAX, u64::MAX).unwrap_err()),
+            (
+                u64::MAX,
+                u64::MAX,
+                u128::from(u64::MAX) * u128::from(u64::MAX)
+            )
+        );
+        // Wider than 32 bits: the width as given, on every target.
+        assert_eq!(
+            too_large(GridMap::check_size(1 << 40, 3).unwrap_err()),
+            (1 << 40, 3, 3 << 40)
+        );
+        // The constructors: the width given, not clamped.
+        let widest = usize::MAX as u64;
+        assert_eq!(
+            too_large(GridMap::new(usize::MAX, 2, 1.0, (0.0, 0.0), vec![]).unwrap_err()),
+            (widest, 2, u128::from(widest) * 2)
+        );
+        assert_eq!(
+            too_large(GridMap::new(usize::MAX, usize::MAX, 1.0, (0.0, 0.0), vec![]).unwrap_err()),
+            (widest, widest, u128::from(widest) * u128::from(widest))
+        );
+        assert_eq!(
+            too_large(GridMap::from_map_data(&[], i32::MAX, 3, 1.0).unwrap_err()),
+            (i32::MAX as u64, 3, 3 * i32::MAX as u128)
+        );
+        assert_eq!(
+            GridMap::from_map_data(&[], 2, -3, 1.0),
+            Err(MapError::BadDimension {
+                axis: "MapLengthY",
+                value: -3
+            })
+        );
     }
 
     /// Copies share their cells; the same update on each copy is computed once and gives

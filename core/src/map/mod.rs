@@ -15,6 +15,9 @@ pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound, could_be
 pub use distance::euclidean_distance_squared;
 pub(crate) use distance::to_metres;
 pub use escape::escape_route;
-pub use grid_map::{Cell, DMIN_TOLERANCE, GridMap, MAX_CELLS, within_dmin};
+pub use grid_map::{
+    Cell, DMIN_TOLERANCE, GridMap, MAX_CELLS, MAX_COORDINATE, MAX_GRID_SIZE, MIN_GRID_SIZE,
+    within_dmin,
+};
 pub(crate) use grid_map::{CellRect, MapStamp};
 pub use map_update::MapUpdate;

@@ -502,12 +502,14 @@ impl Scenario {
         if let Some(exercise) = &self.exercise {
             exercise.validate(&self.name)?;
         }
+        // The map's one geometry rule, on the smallest map: the size is known once the file
+        // is read, and checked again then.
         if let MapSource::Movingai {
             grid_size, origin, ..
         } = &self.map
-            && !(grid_size.is_finite() && *grid_size > 0.0 && origin.iter().all(|v| v.is_finite()))
         {
-            return Err(self.err("map: grid_size must be positive and finite, origin finite"));
+            GridMap::check_geometry(1, 1, *grid_size, (origin[0], origin[1]))
+                .map_err(|e| self.err(format!("map: {e}")))?;
         }
         Ok(())
     }

@@ -57,27 +57,24 @@ fn err(line: Option<usize>, reason: impl Into<String>) -> MapError {
 
 /// Reads an rtnav JSON map.
 pub fn load(text: &str) -> Result<GridMap, MapError> {
-    let file: MapFile =
-        serde_json::from_str(text).map_err(|e| err(Some(e.line()), e.to_string()))?;
+    let file: MapFile = serde_json::from_str(super::without_bom(text))
+        .map_err(|e| err(Some(e.line()), e.to_string()))?;
     // The size is checked before anything is allocated for the cells (spec §2 Decision
-    // 0.2): `width × height` within the limit, no overflow.
+    // 0.2): `width × height` within the limit, no overflow; then the geometry, before the
+    // rows are read.
     let count = GridMap::check_size(file.width, file.height)?;
     let too_big = |axis: &str, v: u64| err(None, format!("{axis} {v} is too large"));
     let width = usize::try_from(file.width).map_err(|_| too_big("width", file.width))?;
     let height = usize::try_from(file.height).map_err(|_| too_big("height", file.height))?;
+    let origin = (file.origin[0], file.origin[1]);
+    GridMap::check_geometry(width, height, file.grid_size, origin)?;
     let cells = match (file.rows, file.cells) {
         (Some(rows), None) => cells_from_rows(&rows, width, height, count)?,
         (None, Some(cells)) => cells,
         (Some(_), Some(_)) => return Err(err(None, "give either `rows` or `cells`, not both")),
         (None, None) => return Err(err(None, "missing `rows` (or `cells`)")),
     };
-    GridMap::new(
-        width,
-        height,
-        file.grid_size,
-        (file.origin[0], file.origin[1]),
-        cells,
-    )
+    GridMap::new(width, height, file.grid_size, origin, cells)
 }
 
 /// The cells of `rows` (`count` = `width × height`, already checked against the limit).

@@ -7,6 +7,8 @@
 //! | [`ros`] | ROS `map_server` maps: a YAML file and a PGM/PNG image |
 //! | [`movingai`] | the MovingAI grid benchmark's `.map` and `.scen` files |
 //!
+//! A text file may start with a UTF-8 byte-order mark; each text reader skips one.
+//!
 //! Every loader checks its input completely and returns
 //! [`MapError::Format`](crate::errors::MapError::Format) naming the format, the line (where
 //! there is one) and the problem; nothing is half-loaded.
@@ -17,6 +19,13 @@ pub mod json;
 pub mod movingai;
 pub mod ros;
 mod yaml_mapping;
+
+/// `text` without one leading UTF-8 byte-order mark (the bytes EF BB BF, which Windows
+/// Notepad writes at the start of a file): every text format reads a file with it as the
+/// same file without.
+fn without_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
+}
 
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>, crate::errors::MapError> {

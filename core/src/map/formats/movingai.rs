@@ -48,10 +48,19 @@ fn lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
         .filter(|(_, l)| !l.is_empty())
 }
 
+/// Sets a header `key`'s value, read on line `n`; a key given twice is an error (which of
+/// the two the file means cannot be told).
+fn once<T>(slot: &mut Option<T>, value: T, key: &str, n: usize) -> Result<(), MapError> {
+    match slot.replace(value) {
+        None => Ok(()),
+        Some(_) => Err(err(MAP, n, format!("`{key}` is given twice in the header"))),
+    }
+}
+
 /// Reads a `.map` file into a [`GridMap`] with `GridSize` 1 m and origin (0, 0), rows
 /// flipped as the module documentation says.
 pub fn load_map(text: &str) -> Result<GridMap, MapError> {
-    let mut it = lines(text);
+    let mut it = lines(super::without_bom(text));
     let (mut width, mut height, mut kind) = (None, None, None);
     let mut last_line = 0;
     loop {
@@ -69,8 +78,8 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
         if words.next().is_some() {
             return Err(err(MAP, n, format!("cannot read header line `{line}`")));
         }
-        let number = |v: Option<&str>| -> Result<usize, MapError> {
-            v.and_then(|v| v.parse::<usize>().ok())
+        let number = |v: Option<&str>| -> Result<u64, MapError> {
+            v.and_then(|v| v.parse::<u64>().ok())
                 .filter(|&v| v >= 1)
                 .ok_or_else(|| {
                     err(
@@ -82,9 +91,9 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
         };
         match (key, value) {
             ("map", None) => break,
-            ("type", Some(t)) => kind = Some(t.to_owned()),
-            ("height", v) => height = Some(number(v)?),
-            ("width", v) => width = Some(number(v)?),
+            ("type", Some(t)) => once(&mut kind, t.to_owned(), key, n)?,
+            ("height", v) => once(&mut height, number(v)?, key, n)?,
+            ("width", v) => once(&mut width, number(v)?, key, n)?,
             _ => return Err(err(MAP, n, format!("unexpected header line `{line}`"))),
         }
     }
@@ -104,7 +113,9 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
     // The size is checked before anything is allocated (spec §2 Decision 0.2), and the
     // cells are gathered as the rows arrive, so the allocation never exceeds what the file
     // holds.
-    GridMap::check_size(width as u64, height as u64)?;
+    GridMap::check_size(width, height)?;
+    // Each at most the cell count, which is within the limit.
+    let (width, height) = (width as usize, height as usize);
     // The rows in file order (top row first), flipped at the end.
     let mut file_rows: Vec<u8> = Vec::new();
     let mut row = 0;
@@ -193,7 +204,7 @@ impl ScenProblem {
 /// Reads a `.scen` file (version 1 / 1.0). Every coordinate is checked to lie inside the
 /// map size given on its line.
 pub fn load_scen(text: &str) -> Result<Vec<ScenProblem>, MapError> {
-    let mut it = lines(text);
+    let mut it = lines(super::without_bom(text));
     match it.next() {
         Some((n, line)) => {
             let words: Vec<&str> = line.split_whitespace().collect();

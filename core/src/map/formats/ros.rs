@@ -33,7 +33,7 @@ use std::io::Cursor;
 
 use image::ImageDecoder;
 use image::codecs::png::PngDecoder;
-use image::codecs::pnm::PnmDecoder;
+use image::codecs::pnm::{PnmDecoder, PnmHeader, PnmSubtype, SampleEncoding};
 
 use super::yaml_mapping::{Mapping, Problem};
 use crate::errors::MapError;
@@ -143,6 +143,7 @@ pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
         line: p.line,
         reason: p.reason,
     };
+    let text = super::without_bom(text);
     if text.len() > MAX_YAML_BYTES {
         return Err(yaml_err(format!(
             "the file has {} bytes; a map's YAML is a few lines (at most {MAX_YAML_BYTES} bytes)",
@@ -171,20 +172,20 @@ pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
     if raw.image.trim().is_empty() {
         return Err(yaml_err("`image` is empty"));
     }
-    if !(raw.resolution.is_finite() && raw.resolution > 0.0) {
-        return Err(yaml_err(format!(
-            "`resolution` {} must be positive and finite",
-            raw.resolution
-        )));
-    }
     let origin: [f64; 3] = raw.origin.as_slice().try_into().map_err(|_| {
         yaml_err(format!(
             "`origin` must have 3 elements [x, y, yaw], not {}",
             raw.origin.len()
         ))
     })?;
-    if origin.iter().any(|v| !v.is_finite()) {
-        return Err(yaml_err(format!("`origin` {origin:?} must be finite")));
+    // The map's geometry rule, on the smallest map: the image's size is not known yet
+    // (`load_image` checks again with it).
+    GridMap::check_geometry(1, 1, raw.resolution, (origin[0], origin[1]))?;
+    if !origin[2].is_finite() {
+        return Err(yaml_err(format!(
+            "`origin` yaw {} must be finite",
+            origin[2]
+        )));
     }
     for (name, v) in [
         ("occupied_thresh", raw.occupied_thresh),
@@ -242,25 +243,36 @@ pub fn load_image(
     image_bytes: &[u8],
     options: &RosLoadOptions,
 ) -> Result<RosMap, MapError> {
+    let file = &yaml.image;
     let kind = match image::guess_format(image_bytes) {
-        Ok(image::ImageFormat::Pnm) => "PGM/PNM",
-        Ok(image::ImageFormat::Png) => "PNG",
-        _ => return Err(image_err("neither a PGM nor a PNG image")),
+        Ok(image::ImageFormat::Pnm) => Kind::Pnm,
+        Ok(image::ImageFormat::Png) => Kind::Png,
+        _ => {
+            return Err(image_err(format!(
+                "`{file}` is neither a PGM nor a PNG image"
+            )));
+        }
     };
-    let bad = |e: image::ImageError| image_err(format!("cannot decode the {kind} image: {e}"));
+    let bad = |e: image::ImageError| image_err(undecodable(kind, file, image_bytes, &e));
+    let geometry = |w: usize, h: usize| {
+        GridMap::check_geometry(w, h, yaml.resolution, (yaml.origin[0], yaml.origin[1]))
+    };
     // The format's own decoder, samples as stored (a PNG's palette, low bit depths and
     // transparency expanded to 8-bit samples, 16-bit ones kept): no conversion of the pixels.
-    let image = if kind == "PNG" {
-        decode(
+    let image = match kind {
+        Kind::Png => decode(
             PngDecoder::new(Cursor::new(image_bytes)).map_err(bad)?,
             None,
-        )
-    } else {
+            geometry,
+        ),
         // A PNM image is not compressed: it needs at least one bit a pixel (P4's packing), so
         // a header that claims more pixels than the file can hold is refused before anything
         // is allocated for them.
-        let most = 8 * image_bytes.len() as u64;
-        decode(PnmDecoder::new(image_bytes).map_err(bad)?, Some(most))
+        Kind::Pnm => decode(
+            PnmDecoder::new(image_bytes).map_err(bad)?,
+            Some(8 * image_bytes.len() as u64),
+            geometry,
+        ),
     };
     let Decoded {
         width,
@@ -292,7 +304,8 @@ pub fn load_image(
         C::Rgba16 => rule.classify(&wide(), 4, true, 65535.0),
         other => {
             return Err(image_err(format!(
-                "the {kind} image's samples ({other:?}) are not 8 or 16-bit integers"
+                "the {} image `{file}`'s samples ({other:?}) are not 8 or 16-bit integers",
+                kind.name()
             )));
         }
     };
@@ -346,14 +359,96 @@ struct Decoded {
     samples: Vec<u8>,
 }
 
+/// The two image formats read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Pnm,
+    Png,
+}
+
+impl Kind {
+    fn name(self) -> &'static str {
+        match self {
+            Kind::Pnm => "PGM/PNM",
+            Kind::Png => "PNG",
+        }
+    }
+}
+
+/// Why the decoder refused `file`, in words: a file that ends before its pixel data does is
+/// *truncated* (for a PGM/PNM, with what its header asks for and what there is); anything
+/// else is the decoder's own reason.
+fn undecodable(kind: Kind, file: &str, bytes: &[u8], e: &image::ImageError) -> String {
+    let truncated = |detail: String| format!("`{file}` is truncated: {detail}");
+    if kind == Kind::Pnm
+        && let Ok(d) = PnmDecoder::new(bytes)
+    {
+        let (rest, header) = d.into_inner();
+        let (expected, found, what) = pnm_pixel_data(&header, rest);
+        if found < expected {
+            return truncated(format!(
+                "its header gives {}×{} pixels, {expected} {what}, but the file holds {found}",
+                header.width(),
+                header.height(),
+            ));
+        }
+    }
+    if ends_early(e) {
+        return truncated("the file ends before the image does".to_owned());
+    }
+    format!("cannot decode the {} image `{file}`: {e}", kind.name())
+}
+
+/// What a PNM header asks for after it and what `rest` (the file after the header) holds:
+/// `(expected, found, what is counted)`. A binary form counts bytes of pixel data (P4 packs
+/// 8 pixels a byte, row by row; the others take one byte a sample, two when the largest
+/// sample value exceeds 255); an ASCII form counts samples (P1 a `0` or `1` each, P2 and
+/// P3 a number each).
+fn pnm_pixel_data(header: &PnmHeader, rest: &[u8]) -> (u64, u64, &'static str) {
+    let pixels = u64::from(header.width()) * u64::from(header.height());
+    let held = rest.len() as u64;
+    let sample_bytes = if header.maximal_sample() > 255 { 2 } else { 1 };
+    let bytes = |samples: u64| {
+        let expected = pixels.saturating_mul(samples).saturating_mul(sample_bytes);
+        (expected, held, "bytes of pixel data")
+    };
+    let numbers = || {
+        rest.split(|b| !b.is_ascii_digit())
+            .filter(|run| !run.is_empty())
+            .count() as u64
+    };
+    match header.subtype() {
+        PnmSubtype::Bitmap(SampleEncoding::Binary) => (
+            u64::from(header.width()).div_ceil(8) * u64::from(header.height()),
+            held,
+            "bytes of pixel data",
+        ),
+        PnmSubtype::Graymap(SampleEncoding::Binary) => bytes(1),
+        PnmSubtype::Pixmap(SampleEncoding::Binary) => bytes(3),
+        PnmSubtype::ArbitraryMap => bytes(header.as_arbitrary().map_or(1, |a| u64::from(a.depth))),
+        PnmSubtype::Bitmap(SampleEncoding::Ascii) => {
+            let digits = rest.iter().filter(|b| matches!(b, b'0' | b'1')).count() as u64;
+            (pixels, digits, "samples")
+        }
+        PnmSubtype::Graymap(SampleEncoding::Ascii) => (pixels, numbers(), "samples"),
+        PnmSubtype::Pixmap(SampleEncoding::Ascii) => (pixels * 3, numbers(), "samples"),
+    }
+}
+
+/// Whether the decoder stopped because the data ran out.
+fn ends_early(e: &image::ImageError) -> bool {
+    matches!(e, image::ImageError::IoError(io) if io.kind() == std::io::ErrorKind::UnexpectedEof)
+}
+
 /// Decodes the image once its size, read from its header, is known to be a map's (not
 /// empty, at most [`MAX_CELLS`](crate::map::MAX_CELLS): [`GridMap::check_size`], spec §2
-/// Decision 0.2) and, for an image that is not compressed, at most `most_pixels`; the outer
-/// error is the size's, the inner one the decoder's. Nothing is allocated for the pixels
-/// before these checks.
+/// Decision 0.2; its geometry accepted by `geometry`, [`GridMap::check_geometry`]) and, for
+/// an image that is not compressed, at most `most_pixels`; the outer error is the map's,
+/// the inner one the decoder's. Nothing is allocated for the pixels before these checks.
 fn decode(
     d: impl ImageDecoder,
     most_pixels: Option<u64>,
+    geometry: impl FnOnce(usize, usize) -> Result<(), MapError>,
 ) -> Result<image::ImageResult<Decoded>, MapError> {
     let (w, h) = d.dimensions();
     let (width, height) = (w as usize, h as usize);
@@ -363,6 +458,7 @@ fn decode(
         )));
     }
     GridMap::check_size(u64::from(w), u64::from(h))?;
+    geometry(width, height)?;
     if let Some(most) = most_pixels
         && u64::from(w) * u64::from(h) > most
     {
