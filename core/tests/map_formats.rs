@@ -655,3 +655,59 @@ fn a_movingai_header_with_a_key_twice_or_a_huge_size_is_refused() {
         })
     ));
 }
+
+/// A MovingAI file that is not one (one enormous line, numbers beyond any size) gives a
+/// short message naming the problem: quoted text is cut at 40 characters, and digits too
+/// many for a size are "too large", not "not a whole number".
+#[test]
+fn movingai_errors_quote_little_and_say_too_large() {
+    let garbage = "x".repeat(100_000);
+    let e = text(movingai::load_map(&format!("{garbage} 1 2\n")).unwrap_err());
+    assert_eq!(
+        e,
+        format!(
+            "MovingAI .map (line 1): cannot read header line `{}…`",
+            "x".repeat(40)
+        )
+    );
+    let e = text(movingai::load_scen(&format!("{garbage}\n")).unwrap_err());
+    assert!(e.len() < 100, "{e}");
+    let e = text(
+        movingai::load_map(&format!("type {garbage}\nheight 1\nwidth 1\nmap\n.\n")).unwrap_err(),
+    );
+    assert!(e.len() < 100, "{e}");
+    assert_eq!(
+        text(
+            movingai::load_map("type octile\nheight 1\nwidth 99999999999999999999999\nmap\n")
+                .unwrap_err()
+        ),
+        "MovingAI .map (line 3): `width 99999999999999999999999`: width is too large"
+    );
+    let scen = |field: &str| {
+        text(movingai::load_scen(&format!("version 1\n0 a.map 4 4 {field} 1 1 1 1\n")).unwrap_err())
+    };
+    assert!(
+        scen("99999999999999999999999").ends_with("start x `99999999999999999999999` is too large")
+    );
+    assert!(scen("-1").ends_with("start x `-1` is not a whole number ≥ 0"));
+    let opt = format!("version 1\n0 a.map 4 4 1 1 1 1 {garbage}\n");
+    assert!(text(movingai::load_scen(&opt).unwrap_err()).len() < 120);
+}
+
+/// A ROS YAML value that is not what it should be is quoted short.
+#[test]
+fn ros_yaml_errors_quote_little() {
+    // A long value, and a long key given twice (an implicit key has at most 1024 characters).
+    let (long, key) = ("x".repeat(30_000), "x".repeat(1000));
+    for yaml in [
+        YAML.replace("resolution: 0.5", &format!("resolution: {long}")),
+        format!("{YAML}mode: {long}\n"),
+        format!("{YAML}{key}: 1\n{key}: 2\n"),
+    ] {
+        let e = text(ros::parse_yaml(&yaml).unwrap_err());
+        assert!(
+            e.len() < 120 && e.contains(&format!("{}…", "x".repeat(40))),
+            "{e}"
+        );
+    }
+}

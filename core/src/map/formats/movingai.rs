@@ -19,6 +19,7 @@
 //! map, map width, map height, start x, start y, goal x, goal y, optimal length — separated
 //! by tabs (then the map name may contain spaces) or by spaces.
 
+use super::shown;
 use crate::errors::MapError;
 use crate::map::{Cell, GridMap};
 
@@ -46,6 +47,20 @@ fn lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim_end()))
         .filter(|(_, l)| !l.is_empty())
+}
+
+/// Why a number is refused when its digits are more than its type holds.
+const TOO_LARGE: &str = "is too large";
+
+/// A whole number ≥ 0 as written, or why not: [`TOO_LARGE`], or not such a number.
+fn whole<T: std::str::FromStr>(v: &str) -> Result<T, &'static str> {
+    v.parse().map_err(|_| {
+        if !v.is_empty() && v.bytes().all(|b| b.is_ascii_digit()) {
+            TOO_LARGE
+        } else {
+            "is not a whole number ≥ 0"
+        }
+    })
 }
 
 /// Sets a header `key`'s value, read on line `n`; a key given twice is an error (which of
@@ -76,25 +91,32 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
         let key = words.next().unwrap_or_default();
         let value = words.next();
         if words.next().is_some() {
-            return Err(err(MAP, n, format!("cannot read header line `{line}`")));
+            return Err(err(
+                MAP,
+                n,
+                format!("cannot read header line `{}`", shown(line)),
+            ));
         }
         let number = |v: Option<&str>| -> Result<u64, MapError> {
-            v.and_then(|v| v.parse::<u64>().ok())
-                .filter(|&v| v >= 1)
-                .ok_or_else(|| {
-                    err(
-                        MAP,
-                        n,
-                        format!("`{line}`: {key} must be a whole number ≥ 1"),
-                    )
-                })
+            let why = match v.map(whole::<u64>) {
+                Some(Ok(v)) if v >= 1 => return Ok(v),
+                Some(Err(TOO_LARGE)) => TOO_LARGE,
+                _ => "must be a whole number ≥ 1",
+            };
+            Err(err(MAP, n, format!("`{}`: {key} {why}", shown(line))))
         };
         match (key, value) {
             ("map", None) => break,
             ("type", Some(t)) => once(&mut kind, t.to_owned(), key, n)?,
             ("height", v) => once(&mut height, number(v)?, key, n)?,
             ("width", v) => once(&mut width, number(v)?, key, n)?,
-            _ => return Err(err(MAP, n, format!("unexpected header line `{line}`"))),
+            _ => {
+                return Err(err(
+                    MAP,
+                    n,
+                    format!("unexpected header line `{}`", shown(line)),
+                ));
+            }
         }
     }
     match kind.as_deref() {
@@ -103,7 +125,7 @@ pub fn load_map(text: &str) -> Result<GridMap, MapError> {
             return Err(err(
                 MAP,
                 last_line,
-                format!("type `{other}` is not `octile`"),
+                format!("type `{}` is not `octile`", shown(other)),
             ));
         }
         None => return Err(err(MAP, last_line, "missing `type octile` in the header")),
@@ -212,7 +234,7 @@ pub fn load_scen(text: &str) -> Result<Vec<ScenProblem>, MapError> {
                 return Err(err(
                     SCEN,
                     n,
-                    format!("expected `version 1`, found `{line}`"),
+                    format!("expected `version 1`, found `{}`", shown(line)),
                 ));
             }
         }
@@ -235,8 +257,7 @@ fn parse_problem(n: usize, line: &str) -> Result<ScenProblem, MapError> {
         ));
     };
     let int = |name: &str, v: &str| -> Result<usize, MapError> {
-        v.parse::<usize>()
-            .map_err(|_| err(SCEN, n, format!("{name} `{v}` is not a whole number ≥ 0")))
+        whole(v).map_err(|why| err(SCEN, n, format!("{name} `{}` {why}", shown(v))))
     };
     let bucket = u32::try_from(int("bucket", bucket)?)
         .map_err(|_| err(SCEN, n, format!("bucket `{bucket}` is too large")))?;
@@ -260,7 +281,7 @@ fn parse_problem(n: usize, line: &str) -> Result<ScenProblem, MapError> {
             err(
                 SCEN,
                 n,
-                format!("optimal length `{opt}` is not a number ≥ 0"),
+                format!("optimal length `{}` is not a number ≥ 0", shown(opt)),
             )
         })?;
     Ok(ScenProblem {

@@ -211,7 +211,8 @@ pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
         }
         Some(other) => {
             return Err(yaml_err(format!(
-                "`mode` `{other}` is not one of trinary, scale"
+                "`mode` `{}` is not one of trinary, scale",
+                super::shown(other)
             )));
         }
     };

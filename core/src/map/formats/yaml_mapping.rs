@@ -103,7 +103,10 @@ impl Mapping {
                 _ => Value::Nested,
             };
             if map.insert(key.clone(), (value, line)).is_some() {
-                return Err(Problem::at(line, format!("duplicate key `{key}`")));
+                return Err(Problem::at(
+                    line,
+                    format!("duplicate key `{}`", super::shown(&key)),
+                ));
             }
         }
     }
@@ -153,7 +156,7 @@ impl Mapping {
     pub(crate) fn wrong(&self, key: &str, what: &str, text: &str) -> Problem {
         Problem {
             line: self.get(key).map(|(_, line)| *line),
-            reason: format!("`{key}`: expected {what}, found `{text}`"),
+            reason: format!("`{key}`: expected {what}, found `{}`", super::shown(text)),
         }
     }
 }
