@@ -17,7 +17,7 @@
 //! | key | type | meaning |
 //! | --- | --- | --- |
 //! | `width`, `height` | integers ≥ 1 | cells in x and y (`MapLengthX`, `MapLengthY`) |
-//! | `grid_size` | number > 0 | cell edge in metres (`GridSize`) |
+//! | `grid_size` | number, 1e-4 ..= 1e3 | cell edge in metres (`GridSize`); the origin and the far corner lie within ±1e9 m ([`GridMap::check_geometry`]) |
 //! | `origin` | `[x, y]`, optional | world position (m) of the lower-left corner of cell (0, 0); default `[0, 0]` |
 //! | `rows` | `height` strings of `width` characters | `.` free, `#` obstacle. **The first string is the top row** (y = `height − 1`), so the file looks like the map; the last string is row y = 0 |
 //! | `cells` | `width · height` numbers 0/1 | instead of `rows`: `SetMap`'s `MapData`, x fastest from y = 0 (000 §3.2.2.1 (4)) |

@@ -13,7 +13,8 @@
 //! **`.map`**: the header lines `type octile`, `height H`, `width W` (in either order), then
 //! `map`, then `H` rows of `W` characters. `.`, `G`, `S` are passable (free), `@`, `O`, `T`,
 //! `W` are not (obstacle); any other character is an error. Spaces or tabs may separate a
-//! header key from its value; CRLF line ends and blank lines are accepted.
+//! header key from its value; CRLF line ends and blank lines are accepted; a header key given
+//! twice is an error.
 //!
 //! **`.scen`**: the line `version 1` (or `version 1.0`), then one problem per line: bucket,
 //! map, map width, map height, start x, start y, goal x, goal y, optimal length — separated

@@ -7,7 +7,7 @@
 //! | key | meaning |
 //! | --- | --- |
 //! | `image` | the image file, relative to the YAML file (only [`load_file`] reads it) |
-//! | `resolution` | metres per pixel → `GridSize` |
+//! | `resolution` | metres per pixel → `GridSize`; with `origin` and the image's size, within the map's limits ([`GridMap::check_geometry`]) |
 //! | `origin` | `[x, y, yaw]`: the pose of the lower-left pixel → the map origin (yaw is kept in [`RosMapYaml::origin`] but a `GridMap` is axis-aligned, so it is not applied — as "many parts of the system" in ROS ignore it) |
 //! | `negate` | `0`/`1` (or `false`/`true`): swap the meaning of black and white |
 //! | `occupied_thresh`, `free_thresh` | thresholds on the occupancy probability `p` |
