@@ -559,6 +559,109 @@ fn components_have_their_rates_states_and_live_configuration() {
 }
 
 #[test]
+fn rates_beyond_a_kilohertz_or_off_the_base_tick_are_refused_where_they_enter() {
+    // Built: a 1 GHz physics would make the base tick 1 ns and the set-up's 5 s of planning
+    // five billion ticks.
+    let fast = Rates {
+        physics: 1e9,
+        ..Rates::default()
+    };
+    let e = System::new(fast).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "PhysicsSim0: rate 1000000000 Hz is not usable: it is above the highest rate, 1000 Hz \
+         (the physics' 1 ms step)"
+    );
+    // Read: a scenario's rates are checked with the scenario, naming the component.
+    let scenario = |rates: &str| {
+        format!(
+            r#"{{"name": "r", "description": "", "lesson": "",
+                "map": {{"format": "json", "path": "m.json"}},
+                "start": {{"x": 1, "y": 1}}, "goal": {{"x": 2, "y": 1}},
+                "rates": {rates}, "time_limit": 10, "expect": {{"outcome": "arrived"}}}}"#
+        )
+    };
+    let refused = |rates: &str| {
+        Scenario::from_json(&scenario(rates))
+            .unwrap_err()
+            .to_string()
+    };
+    assert_eq!(
+        refused(r#"{"motor_control": 1e9}"#),
+        "scenario `r`: rates: MotorControl0: rate 1000000000 Hz is not usable: it is above the \
+         highest rate, 1000 Hz (the physics' 1 ms step)"
+    );
+    assert_eq!(
+        refused(r#"{"drive_control": 3}"#),
+        "scenario `r`: rates: DriveControl0: rate 3 Hz is not usable: its period is not a whole \
+         number of nanoseconds"
+    );
+    assert_eq!(
+        refused(r#"{"drive_control": 400}"#),
+        "scenario `r`: rates: DriveControl0: rate 400 Hz is not usable: its period of 2500000 ns \
+         is not a whole number of base ticks (1000000 ns)"
+    );
+    let slow = r#"{"physics": 400, "motor_control": 400, "localization": 400,
+                   "drive_control": 50, "telemetry": 50}"#;
+    assert_eq!(
+        refused(slow),
+        "scenario `r`: rates: PhysicsSim0: rate 400 Hz is not usable: its period of 2500000 ns \
+         is not a whole number of the physics' 1000000 ns steps"
+    );
+    assert!(Scenario::from_json(&scenario(r#"{"drive_control": 25}"#)).is_ok());
+    // SetRate: the same check, and nothing changes.
+    let mut s = System::new(Rates::default()).unwrap();
+    let e = s
+        .apply(&Input::SetRate {
+            component: ComponentKind::DriveControl,
+            hz: 2000.0,
+        })
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "DriveControl0: rate 2000 Hz is not usable: it is above the highest rate, 1000 Hz (the \
+         physics' 1 ms step)"
+    );
+    assert_eq!(s.rates(), Rates::default());
+    assert!(
+        s.set_telemetry_rate(1e12)
+            .unwrap_err()
+            .to_string()
+            .starts_with("telemetry: ")
+    );
+}
+
+#[test]
+fn a_run_longer_than_a_day_is_refused() {
+    let json = |limit: &str| {
+        format!(
+            r#"{{"name": "long", "description": "", "lesson": "",
+                "map": {{"format": "json", "path": "fixtures/maps/scenarios/corridor_turn.json"}},
+                "start": {{"x": 1.5, "y": 1.3}}, "goal": {{"x": 12.0, "y": 1.3}},
+                "time_limit": {limit}, "expect": {{"outcome": "arrived"}}}}"#
+        )
+    };
+    let e = Scenario::from_json(&json("1e18")).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "scenario `long`: time_limit 1000000000000000000 s is later than 86400 s (24 h of \
+         simulated time), the longest a run or a replay goes"
+    );
+    let scenario = Scenario::from_json(&json("86400")).unwrap();
+    let mut run = ScenarioRun::new(&scenario, &DirResolver::new("..")).unwrap();
+    let limit = run.limit();
+    let e = run.set_limit(1e18).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "scenario `long`: until 1000000000000000000 s is later than 86400 s (24 h of simulated \
+         time), the longest a run or a replay goes"
+    );
+    assert_eq!(run.limit(), limit, "the limit stays");
+    run.set_limit(86_400.0).unwrap();
+}
+
+#[test]
 fn the_set_up_plans_without_moving_and_draws_the_field() {
     let json = r#"{
         "name": "corridor", "description": "", "lesson": "",

@@ -366,6 +366,23 @@ fn export_import_export_is_identical() {
 }
 
 #[test]
+fn a_byte_order_mark_before_a_conf_is_skipped() {
+    // Editors on Windows write one; the first line is still a marker (or a key).
+    let mut s = System::new(Rates::default()).unwrap();
+    s.apply(&param(ComponentKind::DriveControl, "MaxVelocity", 0.3))
+        .unwrap();
+    let text = s.wiring().to_conf();
+    let mut t = System::new(Rates::default()).unwrap();
+    t.apply(&load_conf(&format!("\u{feff}{text}"))).unwrap();
+    assert_eq!(t.wiring().to_conf(), text);
+    let block = "\u{feff}# [DriveControl0]\nconf.default.MaxVelocity: 0.25\n";
+    t.apply(&load_conf(block)).unwrap();
+    let one = ConfFile::parse("\u{feff}conf.default.MaxVelocity: 0.25\n").unwrap();
+    assert_eq!(one.entries.len(), 1);
+    assert_eq!(one.entries[0].key.to_string(), "conf.default.MaxVelocity");
+}
+
+#[test]
 fn an_imported_value_reaches_the_configuration() {
     let mut s = System::new(Rates::default()).unwrap();
     let text = s.wiring().to_conf();

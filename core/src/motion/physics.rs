@@ -520,9 +520,25 @@ impl Physics {
         {
             return None;
         }
-        let (x0, y0) = map.world_to_cell_signed(x - r, y - r)?;
-        let (x1, y1) = map.world_to_cell_signed(x + r, y + r)?;
+        // The cells the body's bounding box covers, clipped so that the work is bounded by
+        // the map, not by the radius in cells (a body of millions of tiny cells): for a
+        // centre in the map, the map and one ring of cells around it — outside cells are
+        // obstacles, and the ring's cell towards any cell beyond it is strictly nearer; for
+        // a centre outside the map, the 3 × 3 cells around its own cell, which is an
+        // obstacle at distance 0, as is every cell that touches the centre.
+        let (cx, cy) = map.world_to_cell_signed(x, y)?;
+        let (w, h) = (map.width() as i64, map.height() as i64);
+        let ((lx0, ly0), (lx1, ly1)) = if map.contains(cx, cy) {
+            ((-1, -1), (w, h))
+        } else {
+            ((cx - 1, cy - 1), (cx + 1, cy + 1))
+        };
         let (ox, oy) = map.origin();
+        let clip = |v: f64, o: f64, lo: i64, hi: i64| {
+            libm::floor((v - o) / g).clamp(lo as f64, hi as f64) as i64
+        };
+        let (x0, x1) = (clip(x - r, ox, lx0, lx1), clip(x + r, ox, lx0, lx1));
+        let (y0, y1) = (clip(y - r, oy, ly0, ly1), clip(y + r, oy, ly0, ly1));
         let mut best: Option<Touch> = None;
         for j in y0..=y1 {
             for i in x0..=x1 {

@@ -37,7 +37,7 @@
 //! marker, an unknown key, a value that is not a number or out of range.
 
 use crate::errors::{ConfBundleError, ConfigError, SystemError};
-use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet};
+use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet, without_bom};
 
 use super::events::EventKind;
 use super::kind::ComponentKind;
@@ -250,7 +250,7 @@ impl Wiring {
     }
 
     fn split_conf(&self, text: &str) -> crate::Result<Vec<Block>> {
-        let lines: Vec<&str> = text.lines().collect();
+        let lines: Vec<&str> = without_bom(text).lines().collect();
         // (kind, 0-based marker index) of each block, in file order.
         let mut starts: Vec<(ComponentKind, usize)> = Vec::new();
         for (i, &raw) in lines.iter().enumerate() {

@@ -78,6 +78,7 @@ mod graph;
 mod history;
 mod input;
 mod inspect;
+mod json_text;
 mod kind;
 mod links;
 mod mission;
@@ -118,7 +119,9 @@ pub use links::Peer;
 pub use mission::Mission;
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
-pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
+pub use replay::{
+    MAX_REPLAY_BYTES, MAX_REPLAY_NS, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput,
+};
 pub use robot::System;
 pub use runner::{
     ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,

@@ -16,10 +16,9 @@ use super::rates::Rates;
 use super::record::{Record, RunStats};
 use super::status::{Status, SystemState};
 use super::wiring::{Report, Wiring};
-use crate::errors::LifecycleError;
 use crate::interfaces::Pose;
 use crate::map::{GridMap, MapUpdate};
-use crate::rtc::{LifecycleState, Time};
+use crate::rtc::{LifecycleState, Time, period_ticks};
 
 /// The whole robot (module documentation; the wiring is listed in `crate::system`).
 pub struct System {
@@ -40,28 +39,13 @@ impl fmt::Debug for System {
     }
 }
 
-/// `hz` as a whole number of base ticks of `base` ns.
-fn period_ticks(base: u64, hz: f64, what: &str) -> Result<u64, LifecycleError> {
-    let bad = |reason: String| LifecycleError::InvalidRate { rate: hz, reason };
-    if !(hz.is_finite() && hz > 0.0) {
-        return Err(bad(format!("{what}: it must be positive and finite")));
-    }
-    let p = 1e9 / hz;
-    if p.fract() != 0.0 || p < 1.0 || !(p as u64).is_multiple_of(base) {
-        return Err(bad(format!(
-            "{what}: its period is not a whole number of base ticks ({base} ns)"
-        )));
-    }
-    Ok(p as u64 / base)
-}
-
 impl System {
     /// The system at `rates`: every component created (Inactive), ports connected, the
     /// execution context Running, no map.
     pub fn new(rates: Rates) -> crate::Result<Self> {
         let wiring = Wiring::new(rates)?;
         let base = wiring.execution_context().base_period_ns();
-        let telemetry = period_ticks(base, rates.telemetry, "telemetry")?;
+        let telemetry = period_ticks("telemetry", rates.telemetry, base)?;
         let mut system = Self {
             wiring,
             mission: Mission::new(),
@@ -216,7 +200,7 @@ impl System {
     pub fn set_telemetry_rate(&mut self, hz: f64) -> crate::Result<()> {
         let base = self.wiring.execution_context().base_period_ns();
         self.record
-            .set_telemetry_period(period_ticks(base, hz, "telemetry")?);
+            .set_telemetry_period(period_ticks("telemetry", hz, base)?);
         self.rates.telemetry = hz;
         Ok(())
     }

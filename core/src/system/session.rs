@@ -34,6 +34,7 @@ use super::exercise::{ExerciseStatus, parameter_values};
 use super::exercise_watch::ExerciseWatch;
 use super::history::History;
 use super::input::Input;
+use super::json_text;
 use super::kind::ComponentKind;
 use super::rates::Rates;
 use super::robot::System;
@@ -440,8 +441,10 @@ impl Session {
                     status => format!("not deflated data ({status:?})"),
                 })
             })?;
+        let json = core::str::from_utf8(&json)
+            .map_err(|e| bad_token(format!("bad set-up: not UTF-8 text: {e}")))?;
         let setup: Setup =
-            serde_json::from_slice(&json).map_err(|e| bad_token(format!("bad set-up: {e}")))?;
+            json_text::parse(json).map_err(|e| bad_token(format!("bad set-up: {e}")))?;
         if setup.v != SETUP_VERSION {
             return Err(bad_token(format!(
                 "version {} (this page reads version {SETUP_VERSION})",
