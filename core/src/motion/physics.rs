@@ -24,6 +24,7 @@ use super::model_frame::{ModelFrame, TRANSFORM_LEN};
 use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::map::{GridMap, MapUpdate};
+use crate::present::fixed;
 use crate::rtc::Time;
 
 /// The fixed physics step: 1 ms (spec §5 "Fixed step 1 ms"), in nanoseconds.
@@ -275,18 +276,18 @@ impl fmt::Display for BumpReport {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{} bumped into obstacle cell ({}, {}) at ({:.3}, {:.3}) m, t = {:.3} s, \
-             speed {:.3} m/s; stopped at ({:.3}, {:.3}, {:.3} rad)",
+            "{} bumped into obstacle cell ({}, {}) at ({}, {}) m, t = {} s, \
+             speed {} m/s; stopped at ({}, {}, {} rad)",
             self.who,
             self.cell.0,
             self.cell.1,
-            self.contact.0,
-            self.contact.1,
-            self.tm.as_secs_f64(),
-            self.speed,
-            self.pose.x,
-            self.pose.y,
-            self.pose.theta
+            fixed(self.contact.0, 3),
+            fixed(self.contact.1, 3),
+            fixed(self.tm.as_secs_f64(), 3),
+            fixed(self.speed, 3),
+            fixed(self.pose.x, 3),
+            fixed(self.pose.y, 3),
+            fixed(self.pose.theta, 3)
         )
     }
 }

@@ -115,6 +115,15 @@ impl Block {
     }
 }
 
+/// A parameter `name` that `kind` does not have, named with its component
+/// (`DriveControl.MaxSpeed`), as `rtnav compare` names parameters.
+pub(super) fn unknown_parameter(kind: ComponentKind, name: &str) -> ConfigError {
+    ConfigError::UnknownParameter {
+        name: format!("{}.{name}", kind.name()),
+        line: None,
+    }
+}
+
 impl Wiring {
     /// A component's configuration parameters, to read (spec §1 "Configuration
     /// parameters"). MapBuilder and MapMaintenance have none.
@@ -162,10 +171,7 @@ impl Wiring {
                 .specs()
                 .iter()
                 .find(|s| s.name == name)
-                .ok_or_else(|| ConfigError::UnknownParameter {
-                    name: name.to_owned(),
-                    line: None,
-                })?;
+                .ok_or_else(|| unknown_parameter(k, name))?;
             spec.check(value, None)?;
         }
         for &k in kinds {

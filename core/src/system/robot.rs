@@ -16,6 +16,7 @@ use super::rates::Rates;
 use super::record::{Record, RunStats};
 use super::status::{Status, SystemState};
 use super::wiring::{Report, Wiring};
+use crate::errors::LocalPathError;
 use crate::interfaces::Pose;
 use crate::map::{GridMap, MapUpdate};
 use crate::rtc::{LifecycleState, Time, period_ticks};
@@ -98,8 +99,23 @@ impl System {
             Input::SetGoal { goal, direction } => {
                 // Planned from where the robot is: what it believes while driving, its pose
                 // otherwise (e.g. after a bump and a reset, where it is placed again).
+                let not_finite = [
+                    ("GoalX", goal.x),
+                    ("GoalY", goal.y),
+                    ("GoalAngle", goal.theta),
+                ]
+                .into_iter()
+                .find(|(_, v)| !v.is_finite());
                 if self.mission.start().is_none() {
                     Err(SystemError::NoStart { call: "SetGoal" }.into())
+                } else if let Some((argument, value)) = not_finite {
+                    // Said as the request made, not as the SetPosition it becomes.
+                    Err(LocalPathError::NotFinite {
+                        call: "SetGoal",
+                        argument,
+                        value,
+                    }
+                    .into())
                 } else if w.is_driving() {
                     let start = w.localization().current_pose();
                     w.set_position(start, *goal, *direction, false)
@@ -108,9 +124,25 @@ impl System {
                     w.set_position(start, *goal, *direction, true)
                 }
             }
-            Input::MapUpdate { cells } => w
-                .map_update(MapUpdate::from_cells(cells, Time::default()))
-                .map(drop),
+            Input::MapUpdate { cells } => {
+                // A cell beyond i32 (no map has one) is refused as sent, before the
+                // service's i32 arrays would clamp it.
+                let huge = cells
+                    .iter()
+                    .find(|c| i32::try_from(c.0).is_err() || i32::try_from(c.1).is_err());
+                match (w.map(), huge) {
+                    (Some(map), Some(&(x, y, _))) => Err(SystemError::CellOutsideMap {
+                        x,
+                        y,
+                        width: map.width(),
+                        height: map.height(),
+                    }
+                    .into()),
+                    _ => w
+                        .map_update(MapUpdate::from_cells(cells, Time::default()))
+                        .map(drop),
+                }
+            }
             Input::Clear => {
                 w.clear();
                 Ok(())

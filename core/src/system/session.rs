@@ -29,6 +29,7 @@ use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
+use super::conf_bundle::unknown_parameter;
 use super::events::SystemEvent;
 use super::exercise::{ExerciseStatus, parameter_values};
 use super::exercise_watch::ExerciseWatch;
@@ -565,10 +566,7 @@ impl Session {
             .specs()
             .iter()
             .find(|s| s.name == name)
-            .ok_or_else(|| crate::errors::ConfigError::UnknownParameter {
-                name: name.to_owned(),
-                line: None,
-            })?;
+            .ok_or_else(|| unknown_parameter(component, name))?;
         Ok(spec.parse(text, None)?)
     }
 
