@@ -86,6 +86,7 @@ mod rates;
 mod record;
 mod replay;
 mod robot;
+mod run_limit;
 mod runner;
 mod scenario;
 mod session;
@@ -119,10 +120,9 @@ pub use links::Peer;
 pub use mission::Mission;
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
-pub use replay::{
-    MAX_REPLAY_BYTES, MAX_REPLAY_NS, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput,
-};
+pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use robot::System;
+pub use run_limit::MAX_REPLAY_NS;
 pub use runner::{
     ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,
 };

@@ -48,7 +48,7 @@ use super::input::Input;
 use super::json_text;
 use super::kind::ComponentKind;
 use super::rates::Rates;
-use super::replay::beyond_replay_limit_s;
+use super::run_limit::beyond_replay_limit_s;
 use crate::errors::ScenarioError;
 use crate::interfaces::{Direction, Pose};
 use crate::map::GridMap;

@@ -6,7 +6,8 @@ use serde::Serialize;
 use super::super::compare::{Comparison, compare};
 use super::super::history::{History, TimelineView};
 use super::super::kind::ComponentKind;
-use super::super::replay::{Replay, beyond_replay_limit};
+use super::super::replay::Replay;
+use super::super::run_limit::beyond_replay_limit;
 use super::{Session, Source};
 use crate::errors::SessionError;
 
