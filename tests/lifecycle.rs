@@ -113,6 +113,7 @@ fn already(state: ContextState) -> Result<Outcome, LifecycleError> {
 
 fn bad_rate(rate: f64, reason: &str) -> Result<Outcome, LifecycleError> {
     Err(LifecycleError::InvalidRate {
+        component: P.to_owned(),
         rate,
         reason: reason.to_owned(),
     })
@@ -373,13 +374,15 @@ fn illegal_requests_are_refused_and_change_nothing() {
         (vec![Attach], Stop, already(Stopped)),
         (vec![], Stop, already(Stopped)),
         (then(UP, &[Stop]), Stop, already(Stopped)),
-        // rates: positive, finite, a whole number of nanoseconds and of base ticks
+        // rates: positive, finite, at most 1 kHz, a whole number of nanoseconds and of base
+        // ticks
         (UP.to_vec(), Rate(0.0), bad_rate(0.0, "it must be positive and finite")),
         (UP.to_vec(), Rate(-10.0), bad_rate(-10.0, "it must be positive and finite")),
         (UP.to_vec(), Rate(f64::INFINITY), bad_rate(f64::INFINITY, "it must be positive and finite")),
         (UP.to_vec(), Rate(3.0), bad_rate(3.0, "its period is not a whole number of nanoseconds")),
-        (UP.to_vec(), Rate(1500.0), bad_rate(1500.0, "its period is not a whole number of nanoseconds")),
-        (UP.to_vec(), Rate(2000.0), bad_rate(2000.0, "its period of 500000 ns is not a whole number of base ticks (1000000 ns)")),
+        (UP.to_vec(), Rate(999.0), bad_rate(999.0, "its period is not a whole number of nanoseconds")),
+        (UP.to_vec(), Rate(2000.0), bad_rate(2000.0, "it is above the highest rate, 1000 Hz (the physics' 1 ms step)")),
+        (UP.to_vec(), Rate(1e9), bad_rate(1e9, "it is above the highest rate, 1000 Hz (the physics' 1 ms step)")),
         (vec![Start], AttachAt(400.0), bad_rate(400.0, "its period of 2500000 ns is not a whole number of base ticks (1000000 ns)")),
     ];
     // anything after finalize, from every state finalize can come from
@@ -589,11 +592,18 @@ fn one_khz_and_ten_hz_interleave_exactly() {
 fn simulated_time_is_exact_in_integer_nanoseconds() {
     // A base rate whose period is not a whole number of nanoseconds is refused ...
     assert_eq!(
-        ExecutionContext::new(1024.0).unwrap_err(),
+        ExecutionContext::new(999.0).unwrap_err(),
         LifecycleError::InvalidRate {
-            rate: 1024.0,
+            component: "the base tick".to_owned(),
+            rate: 999.0,
             reason: "its period is not a whole number of nanoseconds".to_owned()
         }
+    );
+    // ... and so is one above 1 kHz (a 1 GHz base would make a second a billion ticks).
+    assert_eq!(
+        ExecutionContext::new(1e9).unwrap_err().to_string(),
+        "the base tick: rate 1000000000 Hz is not usable: it is above the highest rate, \
+         1000 Hz (the physics' 1 ms step)"
     );
     // ... and a usable one never drifts: 10^6 ticks of 1 ms are exactly 1000 s.
     let mut ec = ExecutionContext::new(1000.0).unwrap();

@@ -141,6 +141,14 @@ impl Run {
     }
 }
 
+/// `report` with every number written exactly, for comparing two runs: `==` on the report
+/// says a run that never reached its goal (NaN approach heading) differs from itself.
+/// `Debug` writes each `f64` as its shortest round trip, so two numbers print alike
+/// exactly when their bits are the same (a NaN as `NaN`, −0 as `-0.0`).
+fn exactly(report: &ScenarioReport) -> String {
+    format!("{report:?}")
+}
+
 /// Why a scenario of the repository always runs.
 const IN_REPO: &str = "the scenario's map is in the repository";
 
@@ -178,7 +186,11 @@ fn check((name, json, golden): (&str, &str, &str)) -> Option<Run> {
     };
     let report = run.report();
     for other in &runs {
-        assert_eq!(other.report(), report, "{name}: every run the same");
+        assert_eq!(
+            exactly(&other.report()),
+            exactly(&report),
+            "{name}: every run the same"
+        );
     }
     say!(
         "{name}: {:?} after {:.3} s simulated, {:.3} m, {} local plans, clearance {:.4} m; \

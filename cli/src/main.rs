@@ -42,6 +42,7 @@ use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
+use rtnav::components::FIELD_CELLS_PER_EXECUTION;
 use rtnav::data::RepoResolver;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
@@ -486,8 +487,18 @@ fn run(
 fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
     let options = BuildOptions { full_field: true };
-    let system = setup::build(&scenario, &resolver, &Setup::of(&scenario), options)
+    let mut system = setup::build(&scenario, &resolver, &Setup::of(&scenario), options)
         .map_err(|e| e.to_string())?;
+    // The set-up gives the planners PLAN_SECONDS; a large map's plan is spread over more
+    // executions of LocalPathPlanning (at most FIELD_CELLS_PER_EXECUTION field cells each):
+    // go on as long as the map's size needs, twice over (bounded by the map), then draw.
+    if let (false, Some(map)) = (system.wiring().planning_settled(), system.map()) {
+        let executions = (map.width() * map.height()).div_ceil(FIELD_CELLS_PER_EXECUTION) + 2;
+        let seconds = 2.0 * executions as f64 / system.rates().local_path_planning;
+        system
+            .run_until_planned(seconds)
+            .map_err(|e| e.to_string())?;
+    }
     let planned = system.mission().plan_sent();
     for e in system.record().events() {
         if matches!(e.kind, EventKind::PlanningFailed { .. }) {
@@ -508,11 +519,11 @@ fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> C
 /// set-up built with the full potential field).
 fn page_session(path: &Path, root: Option<PathBuf>) -> CliResult<Session> {
     let (scenario, resolver) = load(path, root)?;
-    let name = scenario.name.clone();
     let mut session = Session::new().map_err(|e| e.to_string())?;
+    // The set-up's errors name the scenario already; a file's name its path.
     session
         .load_scenario(scenario, &resolver)
-        .map_err(|e| format!("scenario `{name}`: {e}"))?;
+        .map_err(|e| e.to_string())?;
     Ok(session)
 }
 

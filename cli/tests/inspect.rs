@@ -54,6 +54,35 @@ fn inspect_prints_the_cell_as_one_line_of_json() {
 }
 
 #[test]
+fn a_scenario_that_cannot_be_set_up_is_named_once() {
+    // The start lies outside the map: the set-up refuses it, and says which scenario once.
+    let dir = std::env::temp_dir().join(format!("rtnav-inspect-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(SCENARIO).unwrap()).unwrap();
+    value["start"] = serde_json::json!({"x": -50.0, "y": -50.0});
+    let file = dir.join("outside.json");
+    std::fs::write(&file, value.to_string()).unwrap();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let out = rtnav(&[
+        "inspect",
+        file.to_str().unwrap(),
+        "--cell",
+        "1,1",
+        "--root",
+        root.to_str().unwrap(),
+    ]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with("rtnav: error: scenario `open_field`: "),
+        "{err}"
+    );
+    assert_eq!(err.matches("scenario `open_field`").count(), 1, "{err}");
+}
+
+#[test]
 fn inspect_refuses_a_cell_outside_the_map_and_a_missing_scenario() {
     let out = rtnav(&["inspect", SCENARIO, "--cell", "260,0"]);
     assert!(!out.status.success());

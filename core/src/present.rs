@@ -25,6 +25,18 @@ pub fn number(v: f64) -> String {
     trim(&format!("{v:.decimals$}"))
 }
 
+/// `v` with `decimals` digits after the point (`{:.N}`), as the core's event and status
+/// texts print poses, headings and distances — except that a value that rounds to zero
+/// reads `0.0`, never `-0.0` (`{:.1}` writes `-0.0` for −0 and for any tiny negative, e.g.
+/// a heading of −1e-17° after a turn to 0°).
+pub fn fixed(v: f64, decimals: usize) -> String {
+    let s = format!("{v:.decimals$}");
+    match s.strip_prefix('-') {
+        Some(digits) if digits.bytes().all(|b| b == b'0' || b == b'.') => digits.to_owned(),
+        _ => s,
+    }
+}
+
 fn trim(s: &str) -> String {
     let t = if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.')
@@ -40,7 +52,26 @@ fn trim(s: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::number;
+    use super::{fixed, number};
+
+    #[test]
+    fn fixed_decimals_never_say_minus_zero() {
+        let cases = [
+            (-0.0, 1, "0.0"),
+            (-1e-17, 1, "0.0"),
+            (-0.04, 1, "0.0"),
+            (-0.05000001, 1, "-0.1"),
+            (-0.0004, 3, "0.000"),
+            (-1.25, 2, "-1.25"),
+            (1.23456, 2, "1.23"),
+            (-0.0, 0, "0"),
+            (f64::NAN, 1, "NaN"),
+            (f64::NEG_INFINITY, 1, "-inf"),
+        ];
+        for (v, d, s) in cases {
+            assert_eq!(fixed(v, d), s, "{v} with {d} decimals");
+        }
+    }
 
     #[test]
     fn numbers_read_as_a_person_writes_them() {

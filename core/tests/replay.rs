@@ -352,3 +352,25 @@ fn a_cut_connection_is_recorded_and_seeking_keeps_when_it_was_cut() {
     s.seek(6_000_000_000).unwrap();
     assert_eq!(cut_at(&s), (cut, carried));
 }
+
+#[test]
+fn a_time_past_a_day_is_refused_instead_of_run_to() {
+    let mut s = loaded("open_field");
+    let day = rtnav::system::MAX_REPLAY_NS;
+    let before = fingerprint(&s);
+    let e = s.seek(1_000_000_000_000_000_000).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "replay: seeking to 1000000000000000000 ns is later than 86400000000000 ns (24 h of \
+         simulated time), the longest a run or a replay goes"
+    );
+    // A replay made in code (not read from a file) is checked when it is loaded.
+    let mut replay = s.replay().unwrap();
+    replay.end_ns = day + 1;
+    let e = s.load_replay(&replay).unwrap_err().to_string();
+    assert!(
+        e.starts_with("replay: end_ns 86400000000001 is later than"),
+        "{e}"
+    );
+    assert_eq!(fingerprint(&s), before, "nothing changed");
+}

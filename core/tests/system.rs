@@ -144,7 +144,7 @@ fn bad_start_goal_and_map_input_is_refused_and_changes_nothing() {
             direction: Direction::Forward,
         })
         .unwrap_err();
-    assert_eq!(e.to_string(), "SetPosition: GoalAngle = inf is not finite");
+    assert_eq!(e.to_string(), "SetGoal: GoalAngle = inf is not finite");
     unchanged(&s);
 
     // A goal inside a desk, and one too close to the corridor wall.
@@ -477,6 +477,11 @@ fn an_injected_fault_puts_one_component_in_error_with_its_reason() {
     let drive = info(&s, ComponentKind::DriveControl);
     assert_eq!(drive.state, LifecycleState::Error);
     assert_eq!(drive.last_error.as_deref(), Some("injected fault: test"));
+    // Its status says so: it does not drive while it is in Error.
+    assert_eq!(
+        drive.status,
+        "in Error, not executing: injected fault: test"
+    );
     assert!(s.record().events().iter().any(|e| matches!(
         &e.kind,
         EventKind::FaultInjected { component, reason } if component == "DriveControl0" && reason == "test"
@@ -556,6 +561,184 @@ fn components_have_their_rates_states_and_live_configuration() {
         System::new(bad).is_err(),
         "a telemetry period that is not whole ticks"
     );
+}
+
+#[test]
+fn rates_beyond_a_kilohertz_or_off_the_base_tick_are_refused_where_they_enter() {
+    // Built: a 1 GHz physics would make the base tick 1 ns and the set-up's 5 s of planning
+    // five billion ticks.
+    let fast = Rates {
+        physics: 1e9,
+        ..Rates::default()
+    };
+    let e = System::new(fast).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "PhysicsSim0: rate 1000000000 Hz is not usable: it is above the highest rate, 1000 Hz \
+         (the physics' 1 ms step)"
+    );
+    // Read: a scenario's rates are checked with the scenario, naming the component.
+    let scenario = |rates: &str| {
+        format!(
+            r#"{{"name": "r", "description": "", "lesson": "",
+                "map": {{"format": "json", "path": "m.json"}},
+                "start": {{"x": 1, "y": 1}}, "goal": {{"x": 2, "y": 1}},
+                "rates": {rates}, "time_limit": 10, "expect": {{"outcome": "arrived"}}}}"#
+        )
+    };
+    let refused = |rates: &str| {
+        Scenario::from_json(&scenario(rates))
+            .unwrap_err()
+            .to_string()
+    };
+    assert_eq!(
+        refused(r#"{"motor_control": 1e9}"#),
+        "scenario `r`: rates: MotorControl0: rate 1000000000 Hz is not usable: it is above the \
+         highest rate, 1000 Hz (the physics' 1 ms step)"
+    );
+    assert_eq!(
+        refused(r#"{"drive_control": 3}"#),
+        "scenario `r`: rates: DriveControl0: rate 3 Hz is not usable: its period is not a whole \
+         number of nanoseconds"
+    );
+    assert_eq!(
+        refused(r#"{"drive_control": 400}"#),
+        "scenario `r`: rates: DriveControl0: rate 400 Hz is not usable: its period of 2500000 ns \
+         is not a whole number of base ticks (1000000 ns)"
+    );
+    let slow = r#"{"physics": 400, "motor_control": 400, "localization": 400,
+                   "drive_control": 50, "telemetry": 50}"#;
+    assert_eq!(
+        refused(slow),
+        "scenario `r`: rates: PhysicsSim0: rate 400 Hz is not usable: its period of 2500000 ns \
+         is not a whole number of the physics' 1000000 ns steps"
+    );
+    assert!(Scenario::from_json(&scenario(r#"{"drive_control": 25}"#)).is_ok());
+    // SetRate: the same check, and nothing changes.
+    let mut s = System::new(Rates::default()).unwrap();
+    let e = s
+        .apply(&Input::SetRate {
+            component: ComponentKind::DriveControl,
+            hz: 2000.0,
+        })
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "DriveControl0: rate 2000 Hz is not usable: it is above the highest rate, 1000 Hz (the \
+         physics' 1 ms step)"
+    );
+    assert_eq!(s.rates(), Rates::default());
+    assert!(
+        s.set_telemetry_rate(1e12)
+            .unwrap_err()
+            .to_string()
+            .starts_with("telemetry: ")
+    );
+}
+
+#[test]
+fn a_map_of_tiny_cells_loads_at_once() {
+    // 40 × 40 cells of 10 µm under a body of radius 0.45 m: loading it checks the body
+    // against the map (and a ring of outside cells), not against 8·10⁹ cells of its box.
+    let mut s = System::new(Rates::default()).unwrap();
+    s.load_map(GridMap::new(40, 40, 1e-5, (0.0, 0.0), vec![0; 1600]).unwrap());
+    let e = s
+        .apply(&Input::SetPosition {
+            start: Pose::new(0.0002, 0.0002, 0.0),
+            goal: Pose::new(0.0003, 0.0002, 0.0),
+            direction: Direction::Forward,
+        })
+        .unwrap_err();
+    assert!(e.to_string().contains("too close to an obstacle"), "{e}");
+}
+
+#[test]
+fn refusals_say_the_request_and_the_numbers_as_sent() {
+    let mut s = system(GOAL);
+    let e = s
+        .apply(&Input::SetGoal {
+            goal: Pose::new(f64::NAN, 1.0, 0.0),
+            direction: Direction::Forward,
+        })
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "SetGoal: GoalX = NaN is not finite");
+    let e = s
+        .apply(&Input::MapUpdate {
+            cells: vec![(1, 1, 1), (5_000_000_000, -7, 1)],
+        })
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "cell (5000000000, -7) is outside the map (220 × 160 cells)"
+    );
+    assert_eq!(
+        s.map().unwrap().is_obstacle(1, 1),
+        corridor().is_obstacle(1, 1)
+    );
+}
+
+#[test]
+fn words_for_people_never_say_minus_zero() {
+    // A heading of −1e-17 rad (a turn that ended at 0) and a distance of −0.
+    let goal_set = EventKind::GoalSet {
+        start: Pose::new(-0.001, 1.0, -1e-17),
+        goal: Pose::new(2.0, -0.0, -0.0),
+        direction: Direction::Forward,
+        placed: true,
+    };
+    assert_eq!(
+        goal_set.to_string(),
+        "start and goal set: (0.00, 1.00, 0.0°) → (2.00, 0.00, 0.0°), Forward"
+    );
+    let arrived = EventKind::Arrived {
+        pose: Pose::new(1.0, 2.0, -1e-9),
+        position_error: 0.0,
+        heading_error: -1e-9,
+        approach_heading_error: -1e-9,
+    };
+    assert!(!arrived.to_string().contains("-0.0"), "{arrived}");
+    // Two timestamps a microsecond apart are told apart.
+    let e = rtnav::errors::MotionError::TimeWentBackwards {
+        port: "TargetVelocity",
+        previous_s: 1.000001,
+        now_s: 1.0000001,
+    };
+    assert_eq!(
+        e.to_string(),
+        "TargetVelocity: time went backwards (or stood still): 1.0000001 s after 1.000001 s"
+    );
+}
+
+#[test]
+fn a_run_longer_than_a_day_is_refused() {
+    let json = |limit: &str| {
+        format!(
+            r#"{{"name": "long", "description": "", "lesson": "",
+                "map": {{"format": "json", "path": "fixtures/maps/scenarios/corridor_turn.json"}},
+                "start": {{"x": 1.5, "y": 1.3}}, "goal": {{"x": 12.0, "y": 1.3}},
+                "time_limit": {limit}, "expect": {{"outcome": "arrived"}}}}"#
+        )
+    };
+    let e = Scenario::from_json(&json("1e18")).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "scenario `long`: time_limit 1000000000000000000 s is later than 86400 s (24 h of \
+         simulated time), the longest a run or a replay goes"
+    );
+    let scenario = Scenario::from_json(&json("86400")).unwrap();
+    let mut run = ScenarioRun::new(&scenario, &DirResolver::new("..")).unwrap();
+    let limit = run.limit();
+    let e = run.set_limit(1e18).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "scenario `long`: until 1000000000000000000 s is later than 86400 s (24 h of simulated \
+         time), the longest a run or a replay goes"
+    );
+    assert_eq!(run.limit(), limit, "the limit stays");
+    run.set_limit(86_400.0).unwrap();
 }
 
 #[test]

@@ -188,10 +188,16 @@ fn bad_physics_values_are_refused_and_change_nothing() {
             "{name} = {value}: {e}"
         );
     }
-    assert!(matches!(
-        s.apply(&param(physics, "Masse", 30.0)),
-        Err(Error::Config(ConfigError::UnknownParameter { .. }))
-    ));
+    let e = s.apply(&param(physics, "Masse", 30.0)).unwrap_err();
+    assert!(
+        matches!(&e, Error::Config(ConfigError::UnknownParameter { .. })),
+        "{e}"
+    );
+    // Named with its component: the request named both.
+    assert_eq!(
+        e.to_string(),
+        "unknown configuration parameter `PhysicsSim.Masse`"
+    );
     let cfg = s.wiring().config(physics).unwrap();
     assert_eq!(cfg.value("Mass").unwrap(), 20.0);
     assert_eq!(cfg.value("MaxTorque").unwrap(), 5.0);
@@ -247,7 +253,7 @@ fn a_scenario_configures_physics_sim_by_name() {
     let json = open_field_json(serde_json::json!({ "PhysicsSim0": { "Weight": 30.0 } }));
     let scenario = Scenario::from_json(&json).unwrap();
     let e = build(&scenario).err().unwrap();
-    assert!(e.to_string().contains("`Weight`"), "{e}");
+    assert!(e.to_string().contains("`PhysicsSim.Weight`"), "{e}");
 }
 
 /// The set-up of `scenario` as the runner and the page build it (files from the project).
@@ -363,6 +369,23 @@ fn export_import_export_is_identical() {
     assert_eq!(t.wiring().to_conf(), first);
     s.apply(&load_conf(&first)).unwrap();
     assert_eq!(s.wiring().to_conf(), first);
+}
+
+#[test]
+fn a_byte_order_mark_before_a_conf_is_skipped() {
+    // Editors on Windows write one; the first line is still a marker (or a key).
+    let mut s = System::new(Rates::default()).unwrap();
+    s.apply(&param(ComponentKind::DriveControl, "MaxVelocity", 0.3))
+        .unwrap();
+    let text = s.wiring().to_conf();
+    let mut t = System::new(Rates::default()).unwrap();
+    t.apply(&load_conf(&format!("\u{feff}{text}"))).unwrap();
+    assert_eq!(t.wiring().to_conf(), text);
+    let block = "\u{feff}# [DriveControl0]\nconf.default.MaxVelocity: 0.25\n";
+    t.apply(&load_conf(block)).unwrap();
+    let one = ConfFile::parse("\u{feff}conf.default.MaxVelocity: 0.25\n").unwrap();
+    assert_eq!(one.entries.len(), 1);
+    assert_eq!(one.entries[0].key.to_string(), "conf.default.MaxVelocity");
 }
 
 #[test]

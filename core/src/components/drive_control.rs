@@ -136,7 +136,8 @@ impl fmt::Display for DriveStatus {
             Self::SafetyStop { ahead } => {
                 write!(
                     f,
-                    "safety stop: obstacle {ahead:.2} m ahead, a new plan asked for"
+                    "safety stop: obstacle {} m ahead, a new plan asked for",
+                    crate::present::fixed(*ahead, 2)
                 )
             }
         }

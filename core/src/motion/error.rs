@@ -31,8 +31,9 @@ pub enum MotionError {
     /// by [`Time::checked`](crate::rtc::Time::checked).
     #[error(transparent)]
     BadTimestamp(#[from] crate::rtc::TimestampError),
-    /// A timestamp not later than the previous one on the same port.
-    #[error("{port}: time went backwards (or stood still): {now_s:.3} s after {previous_s:.3} s")]
+    /// A timestamp not later than the previous one on the same port. Both are written
+    /// exactly: two stamps a microsecond apart would read alike at three decimals.
+    #[error("{port}: time went backwards (or stood still): {now_s} s after {previous_s} s")]
     TimeWentBackwards {
         /// The port (seed name).
         port: &'static str,

@@ -24,6 +24,7 @@ use super::model_frame::{ModelFrame, TRANSFORM_LEN};
 use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::map::{GridMap, MapUpdate};
+use crate::present::fixed;
 use crate::rtc::Time;
 
 /// The fixed physics step: 1 ms (spec §5 "Fixed step 1 ms"), in nanoseconds.
@@ -275,18 +276,18 @@ impl fmt::Display for BumpReport {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{} bumped into obstacle cell ({}, {}) at ({:.3}, {:.3}) m, t = {:.3} s, \
-             speed {:.3} m/s; stopped at ({:.3}, {:.3}, {:.3} rad)",
+            "{} bumped into obstacle cell ({}, {}) at ({}, {}) m, t = {} s, \
+             speed {} m/s; stopped at ({}, {}, {} rad)",
             self.who,
             self.cell.0,
             self.cell.1,
-            self.contact.0,
-            self.contact.1,
-            self.tm.as_secs_f64(),
-            self.speed,
-            self.pose.x,
-            self.pose.y,
-            self.pose.theta
+            fixed(self.contact.0, 3),
+            fixed(self.contact.1, 3),
+            fixed(self.tm.as_secs_f64(), 3),
+            fixed(self.speed, 3),
+            fixed(self.pose.x, 3),
+            fixed(self.pose.y, 3),
+            fixed(self.pose.theta, 3)
         )
     }
 }
@@ -520,9 +521,25 @@ impl Physics {
         {
             return None;
         }
-        let (x0, y0) = map.world_to_cell_signed(x - r, y - r)?;
-        let (x1, y1) = map.world_to_cell_signed(x + r, y + r)?;
+        // The cells the body's bounding box covers, clipped so that the work is bounded by
+        // the map, not by the radius in cells (a body of millions of tiny cells): for a
+        // centre in the map, the map and one ring of cells around it — outside cells are
+        // obstacles, and the ring's cell towards any cell beyond it is strictly nearer; for
+        // a centre outside the map, the 3 × 3 cells around its own cell, which is an
+        // obstacle at distance 0, as is every cell that touches the centre.
+        let (cx, cy) = map.world_to_cell_signed(x, y)?;
+        let (w, h) = (map.width() as i64, map.height() as i64);
+        let ((lx0, ly0), (lx1, ly1)) = if map.contains(cx, cy) {
+            ((-1, -1), (w, h))
+        } else {
+            ((cx - 1, cy - 1), (cx + 1, cy + 1))
+        };
         let (ox, oy) = map.origin();
+        let clip = |v: f64, o: f64, lo: i64, hi: i64| {
+            libm::floor((v - o) / g).clamp(lo as f64, hi as f64) as i64
+        };
+        let (x0, x1) = (clip(x - r, ox, lx0, lx1), clip(x + r, ox, lx0, lx1));
+        let (y0, y1) = (clip(y - r, oy, ly0, ly1), clip(y + r, oy, ly0, ly1));
         let mut best: Option<Touch> = None;
         for j in y0..=y1 {
             for i in x0..=x1 {

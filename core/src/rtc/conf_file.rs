@@ -77,11 +77,18 @@ pub struct ConfFile {
 
 const META: [&str; 3] = ["__constraints__", "__type__", "__description__"];
 
+/// `text` without a leading UTF-8 byte order mark (U+FEFF, which some editors write at the
+/// start of a file and `str::trim` keeps): the one place every text reader of rtnav — `.conf`
+/// files and bundles, scenario and replay JSON — drops it.
+pub fn without_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
+}
+
 impl ConfFile {
-    /// Parses the text of a `.conf` file.
+    /// Parses the text of a `.conf` file (a leading byte order mark is skipped).
     pub fn parse(text: &str) -> Result<Self, ConfigError> {
         let mut entries = Vec::new();
-        for (n, raw) in text.lines().enumerate() {
+        for (n, raw) in without_bom(text).lines().enumerate() {
             let line = n + 1;
             let t = raw.trim();
             if t.is_empty() || t.starts_with('#') || t.starts_with('!') {

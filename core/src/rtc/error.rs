@@ -41,10 +41,13 @@ pub enum LifecycleError {
         /// The id asked for.
         id: usize,
     },
-    /// A rate that is not positive and finite, or whose period is not a whole number of
-    /// the context's base ticks.
-    #[error("rate {rate} Hz is not usable: {reason}")]
+    /// A rate that is not positive and finite, above the highest rate
+    /// ([`MAX_BASE_RATE_HZ`](super::MAX_BASE_RATE_HZ)), or whose period is not a whole
+    /// number of the context's base ticks ([`period_ticks`](super::period_ticks)).
+    #[error("{component}: rate {rate} Hz is not usable: {reason}")]
     InvalidRate {
+        /// Whose rate: a component's instance name, `telemetry`, `the base tick`.
+        component: String,
         /// The rate asked for, in Hz.
         rate: f64,
         /// Why it was refused.

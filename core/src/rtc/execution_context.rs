@@ -3,7 +3,7 @@
 //!
 //! Time is an integer count of nanoseconds, advanced only by [`ExecutionContext::tick`]: no
 //! clock is read (spec §6). The context has a *base rate* (e.g. 1 kHz); each component runs at
-//! its own rate, whose period must be a whole number of base ticks.
+//! its own rate, whose period must be a whole number of base ticks ([`super::period_ticks`]).
 //!
 //! **Order (documented invariant)**: on base tick `k` (time `k · base_period`), every
 //! component whose period (in base ticks) divides `k` runs, in the order the components were
@@ -48,6 +48,7 @@
 use core::any::Any;
 
 use super::component::{Component, ComponentError, ReturnCode, Tick};
+use super::rate::period_ticks;
 use super::state::{ContextState, LifecycleState, Request};
 use crate::errors::LifecycleError;
 
@@ -115,27 +116,12 @@ impl core::fmt::Debug for ExecutionContext {
     }
 }
 
-/// The period in nanoseconds of `rate_hz`, if it is a whole number of nanoseconds.
-fn period_ns(rate_hz: f64) -> Result<u64, LifecycleError> {
-    let bad = |reason: &str| LifecycleError::InvalidRate {
-        rate: rate_hz,
-        reason: reason.to_owned(),
-    };
-    if !(rate_hz.is_finite() && rate_hz > 0.0) {
-        return Err(bad("it must be positive and finite"));
-    }
-    let p = NANOS_PER_SEC / rate_hz;
-    if p.fract() != 0.0 || p < 1.0 || p * rate_hz != NANOS_PER_SEC {
-        return Err(bad("its period is not a whole number of nanoseconds"));
-    }
-    Ok(p as u64)
-}
-
 impl ExecutionContext {
-    /// A Stopped context whose base tick runs at `base_rate_hz` (e.g. 1000.0).
+    /// A Stopped context whose base tick runs at `base_rate_hz` (e.g. 1000.0; at most
+    /// [`MAX_BASE_RATE_HZ`](super::MAX_BASE_RATE_HZ)).
     pub fn new(base_rate_hz: f64) -> Result<Self, LifecycleError> {
         Ok(Self {
-            base_period_ns: period_ns(base_rate_hz)?,
+            base_period_ns: period_ticks("the base tick", base_rate_hz, 1)?,
             state: ContextState::Stopped,
             next_tick: 0,
             slots: Vec::new(),
@@ -190,20 +176,6 @@ impl ExecutionContext {
         self.state
     }
 
-    fn period_ticks(&self, rate_hz: f64) -> Result<u64, LifecycleError> {
-        let p = period_ns(rate_hz)?;
-        if !p.is_multiple_of(self.base_period_ns) {
-            return Err(LifecycleError::InvalidRate {
-                rate: rate_hz,
-                reason: format!(
-                    "its period of {p} ns is not a whole number of base ticks ({} ns)",
-                    self.base_period_ns
-                ),
-            });
-        }
-        Ok(p / self.base_period_ns)
-    }
-
     /// Creates a component in this context: runs `on_initialize` (Created → Inactive; it stays
     /// Created if that fails, and the failure is in the events), then `on_startup` if the
     /// context is Running. Returns its id; a bad rate attaches nothing.
@@ -212,7 +184,7 @@ impl ExecutionContext {
         component: Box<dyn Component>,
         rate_hz: f64,
     ) -> Result<ComponentId, LifecycleError> {
-        let period_ticks = self.period_ticks(rate_hz)?;
+        let period_ticks = period_ticks(component.instance_name(), rate_hz, self.base_period_ns)?;
         let id = self.slots.len();
         self.slots.push(Slot {
             component,
@@ -492,7 +464,8 @@ impl ExecutionContext {
             &[Created, Inactive, Active, Error],
             false,
         )?;
-        let p = self.period_ticks(rate_hz)?;
+        let who = self.slots[id].component.instance_name();
+        let p = period_ticks(who, rate_hz, self.base_period_ns)?;
         self.slots[id].period_ticks = p;
         if self.state == ContextState::Running && self.slots[id].state.is_alive() {
             let tick = self.tick_for(id);

@@ -10,11 +10,12 @@ mod config;
 mod execution_context;
 mod idl;
 mod port;
+mod rate;
 mod sample;
 mod state;
 
 pub use component::{Component, ComponentError, ReturnCode, Tick};
-pub use conf_file::{ConfEntry, ConfFile, ConfKey};
+pub use conf_file::{ConfEntry, ConfFile, ConfKey, without_bom};
 pub use config::{
     ConfigAccess, Configuration, DEFAULT_SET, ParamKind, ParamSpec, ParamType, ParameterSet,
     Reflection,
@@ -22,5 +23,6 @@ pub use config::{
 pub use execution_context::{ComponentId, ExecutionContext, InputInjection, LifecycleEvent};
 pub use idl::{Time, TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
 pub use port::{Connector, InPort, OutPort};
+pub use rate::{MAX_BASE_RATE_HZ, period_ticks};
 pub use sample::{PortDirection, PortView, Sample, SampleView, short, short_list};
 pub use state::{ContextState, LifecycleState, Request};

@@ -37,7 +37,7 @@
 //! marker, an unknown key, a value that is not a number or out of range.
 
 use crate::errors::{ConfBundleError, ConfigError, SystemError};
-use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet};
+use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet, without_bom};
 
 use super::events::EventKind;
 use super::kind::ComponentKind;
@@ -115,6 +115,15 @@ impl Block {
     }
 }
 
+/// A parameter `name` that `kind` does not have, named with its component
+/// (`DriveControl.MaxSpeed`), as `rtnav compare` names parameters.
+pub(super) fn unknown_parameter(kind: ComponentKind, name: &str) -> ConfigError {
+    ConfigError::UnknownParameter {
+        name: format!("{}.{name}", kind.name()),
+        line: None,
+    }
+}
+
 impl Wiring {
     /// A component's configuration parameters, to read (spec §1 "Configuration
     /// parameters"). MapBuilder and MapMaintenance have none.
@@ -162,10 +171,7 @@ impl Wiring {
                 .specs()
                 .iter()
                 .find(|s| s.name == name)
-                .ok_or_else(|| ConfigError::UnknownParameter {
-                    name: name.to_owned(),
-                    line: None,
-                })?;
+                .ok_or_else(|| unknown_parameter(k, name))?;
             spec.check(value, None)?;
         }
         for &k in kinds {
@@ -250,7 +256,7 @@ impl Wiring {
     }
 
     fn split_conf(&self, text: &str) -> crate::Result<Vec<Block>> {
-        let lines: Vec<&str> = text.lines().collect();
+        let lines: Vec<&str> = without_bom(text).lines().collect();
         // (kind, 0-based marker index) of each block, in file order.
         let mut starts: Vec<(ComponentKind, usize)> = Vec::new();
         for (i, &raw) in lines.iter().enumerate() {

@@ -9,7 +9,7 @@ use crate::rtc::ConfigError;
 #[serde(tag = "kind")]
 #[non_exhaustive]
 pub enum SystemError {
-    /// An input port the system cannot write into ([`System::inject_input`](crate::system::System::inject_input)).
+    /// An input port the system cannot write into ([`Input::InjectInput`](crate::system::Input::InjectInput)).
     #[error("{component} has no input port `{port}` to inject into (ports: {known})")]
     UnknownPort {
         /// The component named.

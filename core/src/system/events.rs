@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use crate::interfaces::{Direction, Pose};
 use crate::motion::BumpReport;
-use crate::present::number;
+use crate::present::{fixed, number};
 use crate::rtc::LifecycleState;
 
 /// One thing that happened, at simulated time `time_ns`.
@@ -225,18 +225,18 @@ impl fmt::Display for EventKind {
                 placed,
             } => write!(
                 f,
-                "{}: ({:.2}, {:.2}, {:.1}°) → ({:.2}, {:.2}, {:.1}°), {direction:?}",
+                "{}: ({}, {}, {}°) → ({}, {}, {}°), {direction:?}",
                 if *placed {
                     "start and goal set"
                 } else {
                     "new goal"
                 },
-                start.x,
-                start.y,
-                start.theta.to_degrees(),
-                goal.x,
-                goal.y,
-                goal.theta.to_degrees()
+                fixed(start.x, 2),
+                fixed(start.y, 2),
+                fixed(start.theta.to_degrees(), 1),
+                fixed(goal.x, 2),
+                fixed(goal.y, 2),
+                fixed(goal.theta.to_degrees(), 1)
             ),
             EventKind::GlobalPlan {
                 cells,
@@ -244,7 +244,7 @@ impl fmt::Display for EventKind {
                 reason,
                 escaped,
             } => {
-                write!(f, "global plan: {cells} cells, {length:.2} m")?;
+                write!(f, "global plan: {cells} cells, {} m", fixed(*length, 2))?;
                 match reason.as_str() {
                     "MapChanged" => f.write_str(" (the map changed under the route)")?,
                     "DminChanged" => f.write_str(" (dmin changed)")?,
@@ -283,14 +283,14 @@ impl fmt::Display for EventKind {
                 approach_heading_error,
             } => write!(
                 f,
-                "arrived at ({:.3}, {:.3}, {:.1}°): {:.3} m and {:.2}° from the goal \
-                 (it came in {:.1}° off the goal heading)",
-                pose.x,
-                pose.y,
-                pose.theta.to_degrees(),
-                position_error,
-                heading_error.to_degrees(),
-                approach_heading_error.to_degrees()
+                "arrived at ({}, {}, {}°): {} m and {}° from the goal \
+                 (it came in {}° off the goal heading)",
+                fixed(pose.x, 3),
+                fixed(pose.y, 3),
+                fixed(pose.theta.to_degrees(), 1),
+                fixed(*position_error, 3),
+                fixed(heading_error.to_degrees(), 2),
+                fixed(approach_heading_error.to_degrees(), 1)
             ),
             EventKind::ComponentError {
                 component,
@@ -306,7 +306,8 @@ impl fmt::Display for EventKind {
             EventKind::Cleared => f.write_str("Clear: paths and goal dropped"),
             EventKind::SafetyStop { ahead, replanning } => write!(
                 f,
-                "safety stop: obstacle {ahead:.2} m ahead{}",
+                "safety stop: obstacle {} m ahead{}",
+                fixed(*ahead, 2),
                 if *replanning {
                     ", planning again from here"
                 } else {

@@ -78,6 +78,7 @@ mod graph;
 mod history;
 mod input;
 mod inspect;
+mod json_text;
 mod kind;
 mod links;
 mod mission;
@@ -85,6 +86,7 @@ mod rates;
 mod record;
 mod replay;
 mod robot;
+mod run_limit;
 mod runner;
 mod scenario;
 mod session;
@@ -120,6 +122,7 @@ pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use robot::System;
+pub use run_limit::MAX_REPLAY_NS;
 pub use runner::{
     ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,
 };

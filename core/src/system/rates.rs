@@ -4,6 +4,9 @@
 use serde::{Deserialize, Serialize};
 
 use super::ComponentKind;
+use crate::errors::LifecycleError;
+use crate::motion::STEP_NS;
+use crate::rtc::period_ticks;
 
 fn hz_1000() -> f64 {
     1000.0
@@ -18,9 +21,10 @@ fn hz_10() -> f64 {
 /// Rates in Hz of every component and of the telemetry sampling. Read from JSON with
 /// unknown keys refused; a missing key takes its default (spec §6).
 ///
-/// The execution context's base rate is the highest of them; every other rate's period
-/// must be a whole number of base ticks (checked when the system is built), and the physics'
-/// period a whole number of its 1 ms steps.
+/// The execution context's base rate is the highest of them, at most
+/// [`MAX_BASE_RATE_HZ`](crate::rtc::MAX_BASE_RATE_HZ); every other rate's period must be a whole number of base ticks,
+/// and the physics' period a whole number of its 1 ms steps ([`Rates::check`], when a
+/// scenario is read and when the system is built).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Rates {
@@ -99,8 +103,37 @@ impl Rates {
         *slot = hz;
     }
 
+    /// Checks every rate with [`period_ticks`] against the base tick (the highest rate)
+    /// and the physics' period against its 1 ms step; returns the base period \[ns\]. The
+    /// error names the first rate refused, whose it is and the limit it breaks.
+    pub fn check(&self) -> Result<u64, LifecycleError> {
+        let named = ComponentKind::ALL
+            .iter()
+            .map(|&k| (k.instance_name(), self.of(k)))
+            .chain([("telemetry", self.telemetry)]);
+        for (who, hz) in named.clone() {
+            period_ticks(who, hz, 1)?;
+        }
+        let base = period_ticks("the base tick", self.base(), 1)?;
+        for (who, hz) in named {
+            period_ticks(who, hz, base)?;
+        }
+        let physics = period_ticks(ComponentKind::PhysicsSim.instance_name(), self.physics, 1)?;
+        if !physics.is_multiple_of(STEP_NS) {
+            return Err(LifecycleError::InvalidRate {
+                component: ComponentKind::PhysicsSim.instance_name().to_owned(),
+                rate: self.physics,
+                reason: format!(
+                    "its period of {physics} ns is not a whole number of the physics' \
+                     {STEP_NS} ns steps"
+                ),
+            });
+        }
+        Ok(base)
+    }
+
     /// The execution context's base rate: the highest rate (NaN rates are ignored here and
-    /// refused when attached).
+    /// refused by [`Rates::check`]).
     pub fn base(&self) -> f64 {
         ComponentKind::ALL
             .iter()

@@ -28,6 +28,8 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 
 use super::input::Input;
+use super::json_text;
+use super::run_limit::beyond_replay_limit;
 use super::setup::{SETUP_VERSION, Setup};
 use crate::errors::SessionError;
 
@@ -37,7 +39,6 @@ pub const REPLAY_FORMAT: &str = "rtnav-replay";
 pub const REPLAY_VERSION: u32 = 1;
 /// The largest replay file read \[bytes\] (a recorded hour of steady editing is far less).
 pub const MAX_REPLAY_BYTES: usize = 32 << 20;
-
 /// One request and the simulated time it was made at.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TimedInput {
@@ -204,7 +205,7 @@ impl Replay {
             )));
         }
         let head: Head =
-            serde_json::from_str(text).map_err(|e| bad(format!("not a JSON object: {e}")))?;
+            json_text::parse(text).map_err(|e| bad(format!("not a JSON object: {e}")))?;
         match head.format {
             Some(serde_json::Value::String(f)) if f == REPLAY_FORMAT => {}
             other => {
@@ -224,7 +225,7 @@ impl Replay {
                 )));
             }
         }
-        let file: File = serde_json::from_str(text).map_err(|e| bad(format!("malformed: {e}")))?;
+        let file: File = json_text::parse(text).map_err(|e| bad(format!("malformed: {e}")))?;
         if file.setup.v != SETUP_VERSION {
             return Err(bad(format!(
                 "set-up version {} (this build reads version {SETUP_VERSION})",
@@ -240,6 +241,9 @@ impl Replay {
                 "trace hash `{}` is not 64 hex digits",
                 file.trace_hash
             )));
+        }
+        if let Some(reason) = beyond_replay_limit(&format!("end_ns {}", file.end_ns), file.end_ns) {
+            return Err(bad(reason));
         }
         let mut inputs = Vec::with_capacity(file.inputs.len());
         let mut last = 0;
@@ -279,6 +283,7 @@ mod tests {
     use super::*;
     use crate::interfaces::{Direction, Pose};
     use crate::system::ComponentKind;
+    use crate::system::MAX_REPLAY_NS;
 
     fn sample() -> Replay {
         let setup = Setup {
@@ -341,6 +346,8 @@ mod tests {
         let text = r.to_json().unwrap();
         let mut back = Replay::from_json(&text).unwrap();
         assert_eq!(bits(&mut r), bits(&mut back));
+        let bom = Replay::from_json(&format!("\u{feff}{text}")).unwrap();
+        assert_eq!(bom.to_json().unwrap(), text);
         assert_eq!(back.to_json().unwrap(), text);
     }
 
@@ -364,5 +371,22 @@ mod tests {
         assert!(e.contains("malformed"), "{e}");
         let e = refuse(&text.replace("0x7ff8000000000000", "0x3ff0000000000000"));
         assert!(e.contains("is finite"), "{e}");
+        let e = refuse(&text.replace("\"t_ns\":7", "\"t_ns\":7e999"));
+        assert!(e.contains("(a JSON number must fit a 64-bit float"), "{e}");
+    }
+
+    #[test]
+    fn an_end_past_a_day_is_refused() {
+        let text = sample().to_json().unwrap();
+        let e = Replay::from_json(&text.replace("\"end_ns\":9", "\"end_ns\":1000000000000000000"))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "replay: end_ns 1000000000000000000 is later than 86400000000000 ns (24 h of \
+             simulated time), the longest a run or a replay goes"
+        );
+        let day = format!("\"end_ns\":{MAX_REPLAY_NS}");
+        assert!(Replay::from_json(&text.replace("\"end_ns\":9", &day)).is_ok());
     }
 }

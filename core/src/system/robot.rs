@@ -16,10 +16,10 @@ use super::rates::Rates;
 use super::record::{Record, RunStats};
 use super::status::{Status, SystemState};
 use super::wiring::{Report, Wiring};
-use crate::errors::LifecycleError;
+use crate::errors::LocalPathError;
 use crate::interfaces::Pose;
 use crate::map::{GridMap, MapUpdate};
-use crate::rtc::{LifecycleState, Time};
+use crate::rtc::{LifecycleState, Time, period_ticks};
 
 /// The whole robot (module documentation; the wiring is listed in `crate::system`).
 pub struct System {
@@ -40,28 +40,13 @@ impl fmt::Debug for System {
     }
 }
 
-/// `hz` as a whole number of base ticks of `base` ns.
-fn period_ticks(base: u64, hz: f64, what: &str) -> Result<u64, LifecycleError> {
-    let bad = |reason: String| LifecycleError::InvalidRate { rate: hz, reason };
-    if !(hz.is_finite() && hz > 0.0) {
-        return Err(bad(format!("{what}: it must be positive and finite")));
-    }
-    let p = 1e9 / hz;
-    if p.fract() != 0.0 || p < 1.0 || !(p as u64).is_multiple_of(base) {
-        return Err(bad(format!(
-            "{what}: its period is not a whole number of base ticks ({base} ns)"
-        )));
-    }
-    Ok(p as u64 / base)
-}
-
 impl System {
     /// The system at `rates`: every component created (Inactive), ports connected, the
     /// execution context Running, no map.
     pub fn new(rates: Rates) -> crate::Result<Self> {
         let wiring = Wiring::new(rates)?;
         let base = wiring.execution_context().base_period_ns();
-        let telemetry = period_ticks(base, rates.telemetry, "telemetry")?;
+        let telemetry = period_ticks("telemetry", rates.telemetry, base)?;
         let mut system = Self {
             wiring,
             mission: Mission::new(),
@@ -114,8 +99,23 @@ impl System {
             Input::SetGoal { goal, direction } => {
                 // Planned from where the robot is: what it believes while driving, its pose
                 // otherwise (e.g. after a bump and a reset, where it is placed again).
+                let not_finite = [
+                    ("GoalX", goal.x),
+                    ("GoalY", goal.y),
+                    ("GoalAngle", goal.theta),
+                ]
+                .into_iter()
+                .find(|(_, v)| !v.is_finite());
                 if self.mission.start().is_none() {
                     Err(SystemError::NoStart { call: "SetGoal" }.into())
+                } else if let Some((argument, value)) = not_finite {
+                    // Said as the request made, not as the SetPosition it becomes.
+                    Err(LocalPathError::NotFinite {
+                        call: "SetGoal",
+                        argument,
+                        value,
+                    }
+                    .into())
                 } else if w.is_driving() {
                     let start = w.localization().current_pose();
                     w.set_position(start, *goal, *direction, false)
@@ -124,9 +124,25 @@ impl System {
                     w.set_position(start, *goal, *direction, true)
                 }
             }
-            Input::MapUpdate { cells } => w
-                .map_update(MapUpdate::from_cells(cells, Time::default()))
-                .map(drop),
+            Input::MapUpdate { cells } => {
+                // A cell beyond i32 (no map has one) is refused as sent, before the
+                // service's i32 arrays would clamp it.
+                let huge = cells
+                    .iter()
+                    .find(|c| i32::try_from(c.0).is_err() || i32::try_from(c.1).is_err());
+                match (w.map(), huge) {
+                    (Some(map), Some(&(x, y, _))) => Err(SystemError::CellOutsideMap {
+                        x,
+                        y,
+                        width: map.width(),
+                        height: map.height(),
+                    }
+                    .into()),
+                    _ => w
+                        .map_update(MapUpdate::from_cells(cells, Time::default()))
+                        .map(drop),
+                }
+            }
             Input::Clear => {
                 w.clear();
                 Ok(())
@@ -216,7 +232,7 @@ impl System {
     pub fn set_telemetry_rate(&mut self, hz: f64) -> crate::Result<()> {
         let base = self.wiring.execution_context().base_period_ns();
         self.record
-            .set_telemetry_period(period_ticks(base, hz, "telemetry")?);
+            .set_telemetry_period(period_ticks("telemetry", hz, base)?);
         self.rates.telemetry = hz;
         Ok(())
     }

@@ -9,11 +9,12 @@ use super::events::EventKind;
 use super::input::Input;
 use super::kind::ComponentKind;
 use super::robot::System;
+use super::run_limit::beyond_replay_limit_s;
 use super::scenario::{Expectation, FileResolver, OutcomeKind, Scenario};
 use super::setup::{self, BuildOptions, Setup};
 use super::status::{STILL, SystemState};
 use super::timeline::{Timeline, secs_to_ns};
-use crate::errors::SystemError;
+use crate::errors::{ScenarioError, SystemError};
 use crate::interfaces::Pose;
 use crate::motion::{DrivePhase, angle_diff};
 
@@ -231,13 +232,21 @@ impl ScenarioRun {
 
     /// Stops the run at `seconds` of simulated time instead of the scenario's limit (the
     /// runner's `--until`).
-    pub fn set_limit(&mut self, seconds: f64) -> Result<(), SystemError> {
+    pub fn set_limit(&mut self, seconds: f64) -> crate::Result<()> {
         if !(seconds.is_finite() && seconds >= 0.0) {
             return Err(SystemError::BadNumber {
                 what: "until seconds",
                 value: seconds,
                 non_negative: true,
-            });
+            }
+            .into());
+        }
+        if let Some(reason) = beyond_replay_limit_s(&format!("until {seconds} s"), seconds) {
+            return Err(ScenarioError::Scenario {
+                scenario: self.scenario.name.clone(),
+                reason,
+            }
+            .into());
         }
         self.limit_ns = secs_to_ns(seconds);
         Ok(())

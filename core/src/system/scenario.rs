@@ -45,8 +45,10 @@ use serde::{Deserialize, Serialize};
 
 use super::exercise::Exercise;
 use super::input::Input;
+use super::json_text;
 use super::kind::ComponentKind;
 use super::rates::Rates;
+use super::run_limit::beyond_replay_limit_s;
 use crate::errors::ScenarioError;
 use crate::interfaces::{Direction, Pose};
 use crate::map::GridMap;
@@ -391,8 +393,10 @@ impl FileResolver for DirResolver {
 }
 
 /// `a/./b/../c` → `a/c` (leading `..` kept), so that a ROS image named relative to its
-/// YAML finds the same key in a [`MemoryResolver`].
+/// YAML finds the same key in a [`MemoryResolver`]. An absolute path stays absolute
+/// (`/m/./x` → `/m/x`; `..` above the root stays at the root).
 fn normalize(path: &str) -> String {
+    let absolute = path.starts_with('/');
     let mut parts: Vec<&str> = Vec::new();
     for p in path.split('/') {
         match p {
@@ -400,10 +404,16 @@ fn normalize(path: &str) -> String {
             ".." if parts.last().is_some_and(|l| *l != "..") => {
                 parts.pop();
             }
+            ".." if absolute => {}
             _ => parts.push(p),
         }
     }
-    parts.join("/")
+    let joined = parts.join("/");
+    if absolute {
+        format!("/{joined}")
+    } else {
+        joined
+    }
 }
 
 /// `image` named in the YAML at `yaml`: relative to the YAML's folder unless absolute.
@@ -420,9 +430,9 @@ fn sibling(yaml: &str, image: &str) -> String {
 impl Scenario {
     /// Reads a scenario from JSON (unknown keys are errors) and checks it.
     pub fn from_json(text: &str) -> Result<Self, ScenarioError> {
-        let s: Self = serde_json::from_str(text).map_err(|e| ScenarioError::Scenario {
+        let s: Self = json_text::parse(text).map_err(|reason| ScenarioError::Scenario {
             scenario: "(JSON)".to_owned(),
-            reason: e.to_string(),
+            reason,
         })?;
         s.validate()?;
         Ok(s)
@@ -449,6 +459,12 @@ impl Scenario {
                 "time_limit = {} must be positive and finite",
                 self.time_limit
             )));
+        }
+        if let Some(reason) = beyond_replay_limit_s(
+            &format!("time_limit {} s", self.time_limit),
+            self.time_limit,
+        ) {
+            return Err(self.err(reason));
         }
         let mut last = 0.0;
         for (i, e) in self.events.iter().enumerate() {
@@ -495,6 +511,9 @@ impl Scenario {
                 | ScenarioEvent::Fault { .. } => {}
             }
         }
+        self.rates
+            .check()
+            .map_err(|e| self.err(format!("rates: {e}")))?;
         for component in self.config.keys() {
             super::ComponentKind::from_name(component)
                 .map_err(|e| self.err(format!("config: {e}")))?;
@@ -615,6 +634,30 @@ mod tests {
     }
 
     #[test]
+    fn absolute_paths_keep_their_root() {
+        assert_eq!(normalize("/home/u/maps/./x.yaml"), "/home/u/maps/x.yaml");
+        assert_eq!(normalize("/../x"), "/x");
+        assert_eq!(
+            sibling("/home/u/maps/x.yaml", "x.pgm"),
+            "/home/u/maps/x.pgm"
+        );
+        assert_eq!(sibling("/x.yaml", "../x.pgm"), "/x.pgm");
+        // A ROS map named by an absolute path finds its image beside it (the resolver's
+        // root is not where the files are).
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let maps = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures/maps");
+            let yaml = std::fs::canonicalize(maps).unwrap().join("tiny.yaml");
+            let source = MapSource::Ros {
+                yaml: yaml.display().to_string(),
+                unknown: UnknownSpec::Obstacle,
+            };
+            let resolver = DirResolver::new("/nonexistent-root");
+            assert!(source.load(&resolver).is_ok());
+        }
+    }
+
+    #[test]
     fn boxes_cover_the_cells_whose_centre_is_inside() {
         let map = GridMap::from_map_data(&[0; 100], 10, 10, 0.5).unwrap();
         let cells = Scenario::cells_of(
@@ -637,6 +680,14 @@ mod tests {
             "start": {"x": 1, "y": 1}, "goal": {"x": 2, "y": 1, "heading_deg": 90},
             "time_limit": 10, "expect": {"outcome": "arrived"}}"#;
         let s = Scenario::from_json(ok).unwrap();
+        assert_eq!(Scenario::from_json(&format!("\u{feff}{ok}")).unwrap(), s);
+        let nan = Scenario::from_json(&ok.replace("\"x\": 2", "\"x\": NaN"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            nan.ends_with("(JSON has no NaN or Infinity; write a number)"),
+            "{nan}"
+        );
         assert_eq!(s.direction, DirectionSpec::Forward);
         assert_eq!(s.rates, Rates::default());
         let typo = ok.replace("\"lesson\"", "\"lessons\"");

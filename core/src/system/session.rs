@@ -29,11 +29,13 @@ use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
+use super::conf_bundle::unknown_parameter;
 use super::events::SystemEvent;
 use super::exercise::{ExerciseStatus, parameter_values};
 use super::exercise_watch::ExerciseWatch;
 use super::history::History;
 use super::input::Input;
+use super::json_text;
 use super::kind::ComponentKind;
 use super::rates::Rates;
 use super::robot::System;
@@ -440,8 +442,10 @@ impl Session {
                     status => format!("not deflated data ({status:?})"),
                 })
             })?;
+        let json = core::str::from_utf8(&json)
+            .map_err(|e| bad_token(format!("bad set-up: not UTF-8 text: {e}")))?;
         let setup: Setup =
-            serde_json::from_slice(&json).map_err(|e| bad_token(format!("bad set-up: {e}")))?;
+            json_text::parse(json).map_err(|e| bad_token(format!("bad set-up: {e}")))?;
         if setup.v != SETUP_VERSION {
             return Err(bad_token(format!(
                 "version {} (this page reads version {SETUP_VERSION})",
@@ -562,10 +566,7 @@ impl Session {
             .specs()
             .iter()
             .find(|s| s.name == name)
-            .ok_or_else(|| crate::errors::ConfigError::UnknownParameter {
-                name: name.to_owned(),
-                line: None,
-            })?;
+            .ok_or_else(|| unknown_parameter(component, name))?;
         Ok(spec.parse(text, None)?)
     }
 

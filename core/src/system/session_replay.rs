@@ -7,6 +7,7 @@ use super::super::compare::{Comparison, compare};
 use super::super::history::{History, TimelineView};
 use super::super::kind::ComponentKind;
 use super::super::replay::Replay;
+use super::super::run_limit::beyond_replay_limit;
 use super::{Session, Source};
 use crate::errors::SessionError;
 
@@ -64,6 +65,10 @@ impl Session {
         if self.scenario().is_none() {
             return Err(no_history());
         }
+        let end = format!("end_ns {}", replay.end_ns);
+        if let Some(reason) = beyond_replay_limit(&end, replay.end_ns) {
+            return Err(bad(&reason));
+        }
         self.restart_setup(&replay.setup).map_err(|e| match e {
             crate::Error::Session(SessionError::BadShareToken { reason }) => {
                 SessionError::BadReplay { reason }.into()
@@ -103,6 +108,9 @@ impl Session {
     /// the recorded requests replayed on the way. The event log starts again from the
     /// events kept then ([`Session::new_events`] hands them all out).
     pub fn seek(&mut self, t_ns: u64) -> crate::Result<()> {
+        if let Some(reason) = beyond_replay_limit(&format!("seeking to {t_ns} ns"), t_ns) {
+            return Err(bad(&reason));
+        }
         let base = self.system.wiring().execution_context().base_period_ns();
         let target = t_ns.div_ceil(base).saturating_mul(base);
         let now = self.system.time_ns();

@@ -13,6 +13,7 @@ use super::wiring::Wiring;
 use crate::components::{DriveStatus, MotorStatus};
 use crate::interfaces::Direction;
 use crate::motion::DrivePhase;
+use crate::present::fixed;
 use crate::rtc::LifecycleState;
 
 /// Below this speed \[m/s\] and turn rate \[rad/s\] the robot stands still.
@@ -222,7 +223,7 @@ impl Status {
             DriveStatus::SafetyStop { ahead } => {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
-                    reason: format!("obstacle {ahead:.2} m ahead"),
+                    reason: format!("obstacle {} m ahead", fixed(*ahead, 2)),
                 };
             }
             _ => {}
@@ -283,8 +284,11 @@ impl fmt::Display for Status {
             Self::TurningToGoalHeading => f.write_str("turning to the goal heading"),
             Self::OffCommand { v_cmd, w_cmd, v, w } => write!(
                 f,
-                "not following the command: v {v:.2} m/s, ω {w:.2} rad/s \
-                 (commanded {v_cmd:.2} m/s, {w_cmd:.2} rad/s)"
+                "not following the command: v {} m/s, ω {} rad/s (commanded {} m/s, {} rad/s)",
+                fixed(*v, 2),
+                fixed(*w, 2),
+                fixed(*v_cmd, 2),
+                fixed(*w_cmd, 2)
             ),
             Self::Standing => f.write_str("standing"),
         }
@@ -341,6 +345,14 @@ fn plural(n: u64, one: &str) -> String {
 }
 
 fn component_status(w: &Wiring, kind: ComponentKind) -> String {
+    // A component in Error does not execute (spec §1): what it held last is not what it does.
+    if w.component_state(kind) == LifecycleState::Error {
+        let ec = w.execution_context();
+        return match ec.last_error(kind.index()).ok().flatten() {
+            Some(reason) => format!("in Error, not executing: {reason}"),
+            None => "in Error, not executing".to_owned(),
+        };
+    }
     match kind {
         ComponentKind::MapBuilder => match w.map_builder().map() {
             Some(m) => format!("map {}×{} at {} m", m.width(), m.height(), m.grid_size()),
@@ -372,7 +384,7 @@ fn component_status(w: &Wiring, kind: ComponentKind) -> String {
             let g = w.global_path_planning();
             match (g.last_error(), g.path_length()) {
                 (Some(e), _) => format!("failed: {e}"),
-                (None, Some(l)) => format!("route of {l:.2} m"),
+                (None, Some(l)) => format!("route of {} m", fixed(l, 2)),
                 (None, None) => "no route".to_owned(),
             }
         }

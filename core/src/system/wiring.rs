@@ -128,6 +128,7 @@ impl Wiring {
             safety_stop: InPort::new("SafetyStop"),
         };
 
+        rates.check()?;
         let mut ec = ExecutionContext::new(rates.base())?;
         let boxes: [Box<dyn Component>; 8] = [
             Box::new(map_builder),

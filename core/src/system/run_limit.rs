@@ -1,0 +1,29 @@
+//! The longest simulated time a run goes: a bound on every time someone asks the system to
+//! run to, so that an absurd one is refused instead of run for ever.
+
+/// The latest simulated time a replay runs to \[ns\]: 24 h. It bounds every run to a time
+/// someone asks for — a replay's `end_ns`, a seek, a scenario's `time_limit`, `rtnav run
+/// --until` — so that an absurd time (10¹⁸ ns) is refused instead of running for ever.
+pub const MAX_REPLAY_NS: u64 = 24 * 3600 * 1_000_000_000;
+
+/// Why `what`, a time of `t_ns`, is too late to run to ([`MAX_REPLAY_NS`]); `None` if it
+/// is not.
+pub(super) fn beyond_replay_limit(what: &str, t_ns: u64) -> Option<String> {
+    (t_ns > MAX_REPLAY_NS).then(|| {
+        format!(
+            "{what} is later than {MAX_REPLAY_NS} ns (24 h of simulated time), the longest a \
+             run or a replay goes"
+        )
+    })
+}
+
+/// [`beyond_replay_limit`] for a time in seconds (`what` says it as given).
+pub(super) fn beyond_replay_limit_s(what: &str, seconds: f64) -> Option<String> {
+    (seconds * 1e9 > MAX_REPLAY_NS as f64).then(|| {
+        format!(
+            "{what} is later than {} s (24 h of simulated time), the longest a run or a \
+             replay goes",
+            MAX_REPLAY_NS / 1_000_000_000
+        )
+    })
+}
