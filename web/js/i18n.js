@@ -5,7 +5,7 @@
 //
 // The language: `?lang=` in the address (a share link carries it) first, then the choice
 // kept in local storage, then the browser's language. Switching reloads the page in the
-// other language with the current set-up as a share link, so every string is drawn anew.
+// other language, so every string is drawn anew; the run goes with it (`carry.js`).
 export const LANGUAGES = ['en', 'ja'];
 const STORAGE_KEY = 'rtnav.lang';
 
@@ -124,12 +124,16 @@ export function translateStatic(root = document) {
   document.title = t('page.title');
 }
 
-/** Keeps `next` and reloads the page in it, with `share` (a set-up token) if given. */
+/**
+ * Keeps `next` and reloads the page in it, with `share` (a set-up token) if given; without
+ * one, the address names no set-up (the run itself is carried: `carry.js`).
+ */
 export function switchLanguage(next, share = null) {
   try { localStorage.setItem(STORAGE_KEY, next); } catch { /* not kept: the address says it */ }
   const params = new URLSearchParams(location.search);
   params.set('lang', next);
   if (share) params.set('share', share);
+  else params.delete('share');
   location.search = params.toString();
 }
 

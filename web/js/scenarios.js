@@ -176,15 +176,17 @@ export function createScenarios(dom, app) {
     load,
     loadFiles,
     /**
-     * Reads the index, fills the picker and loads the set-up of the share link `share` if
-     * given and good, else the default scenario.
+     * Reads the index, fills the picker and loads: the run `carried()` restores (a run
+     * carried from the other language) if it does, else the set-up of the share link
+     * `share` if given and good, else the default scenario.
      */
-    async loadDefault(share = null) {
+    async loadDefault(share = null, carried = null) {
       index = JSON.parse(await fetchOk(INDEX_URL, 'text'));
       dom.select.replaceChildren(
         ...index.scenarios.map((s) => el('option', { value: s.name, title: scenarioText(s, 'description') }, s.name.replaceAll('_', ' '))),
         custom,
       );
+      if (carried && await carried()) return;
       if (share !== null && await loadShared(share)) return;
       const first = index.default ?? index.scenarios[0]?.name;
       if (first) await load(first);
