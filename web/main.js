@@ -144,11 +144,11 @@ async function boot() {
     if (!drawOwed) app.stage.draw();
     const t1 = performance.now();
     if (guard.crashed) return false;
-    // What reads the page's layout (where the robot is on screen) goes before the panels
+    // What reads the page's layout (where the robot and goal are on screen) goes before the panels
     // write to the page: the layout of the last frame is still valid then, and is not made
     // again in the middle of this one.
     legend.update(app.stage.robotBox);
-    app.notice.update(app.stage.robotBox);
+    app.notice.update(app.stage.keepClear);
     frameTimes.push(t1 - t0);
     if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
     simTime.textContent = `${demo.time_s().toFixed(3)} s`;

@@ -137,11 +137,20 @@ export function switchLanguage(next, share = null) {
   location.search = params.toString();
 }
 
-/** A number as the language writes it (the core's own numbers are already text). */
+/**
+ * A number as the language writes it (the core's own numbers are already text); one that
+ * rounds to zero is "0", never "-0".
+ */
 export function num(value, digits) {
   return Number(value).toLocaleString(lang === 'ja' ? 'ja-JP' : 'en-GB', {
-    maximumFractionDigits: digits, minimumFractionDigits: 0, useGrouping: false,
+    maximumFractionDigits: digits, minimumFractionDigits: 0, useGrouping: false, signDisplay: 'negative',
   });
+}
+
+/** `v` with `digits` decimals (`toFixed`), but "0.00" for a value that rounds to zero, never "-0.00". */
+export function fixed(v, digits) {
+  const s = Number(v).toFixed(digits);
+  return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
 }
 
 // The catalogues are loaded before any module that imports this one runs (top-level await):
