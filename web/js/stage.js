@@ -42,7 +42,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   let len = 0;
   let drawn = false;
   let blitAgain = true;
-  let fixed = null;
+  let fixedSize = null;
   let map = null;
   let hover = null;
   let drag = null;
@@ -53,7 +53,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   function fit() {
     const rect = wrap.getBoundingClientRect();
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
-    const [w, h] = fixed ?? [
+    const [w, h] = fixedSize ?? [
       Math.max(64, Math.round(rect.width * dpr)),
       Math.max(64, Math.round(rect.height * dpr)),
     ];
@@ -552,7 +552,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     setStart,
     resubmitDirection,
     setFixedSize(w, h) {
-      fixed = w && h ? [w, h] : null;
+      fixedSize = w && h ? [w, h] : null;
       fit();
     },
   };
