@@ -169,6 +169,24 @@ test('a notice lets clicks through to the map, keeps its button, and keeps off t
   await page.close();
 });
 
+test('a notice that would cover the goal at the top and the robot at the bottom keeps to a side', { timeout: 60_000 }, async () => {
+  const { page, problems } = await openPage(browser.context, '?lang=ja');
+  // The doorway exercise: its goal is in the far room under the notice's place at the top,
+  // the robot under its place at the bottom; planning fails, and the notice says so.
+  await page.selectOption('#scenario', 'ex_door_dmin');
+  await page.waitForFunction(() => window.rtnav.scenarios.current === 'ex_door_dmin', null, WAIT);
+  await page.waitForSelector('#notice:not([hidden])', WAIT);
+  await frames(page, 3);
+  const [notice, clear] = await page.evaluate(() => [document.getElementById('notice').getBoundingClientRect().toJSON(), window.rtnav.app.stage.keepClear()]);
+  assert.equal(clear.length, 2, 'the robot and the goal');
+  for (const c of clear) {
+    assert.ok(notice.bottom <= c.top || notice.top >= c.bottom || notice.right <= c.left || notice.left >= c.right,
+      `the notice ${JSON.stringify(notice)} covers ${JSON.stringify(c)}`);
+  }
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('one column below 1080 px and two above; the cards keep their style', { timeout: 60_000 }, async () => {
   for (const [width, columns] of [[1280, 2], [1100, 2], [1040, 1], [900, 1], [768, 1]]) {
     const { page, problems } = await openPage(browser.context, '?lang=ja');

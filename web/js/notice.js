@@ -6,15 +6,19 @@
 // soon as `until()` says the state has ended (checked every frame), and `endState()` — called
 // by Reset and Activate, and by loading a scenario — ends it at once. Other notices fade after
 // a few seconds; a refusal stays longer, so it can be read. The notice keeps off the robot and
-// the goal: each frame it is placed at the top of the map, or at the bottom when that covers
-// fewer of them. Clicks pass through it to the map (its text is no control); only its buttons
-// take them (style.css: `pointer-events`).
+// the goal: each frame it is placed at the top of the map, or at the bottom, or along a side,
+// wherever it covers fewest of them. Clicks pass through it to the map (its text is no
+// control); only its button takes them (style.css: `pointer-events`).
 const FADE_MS = { info: 5000, success: 5000, warn: 12000, error: 20000 };
 /** Room kept around the robot's body and the goal, CSS pixels. */
 const CLEARANCE_PX = 6;
 /** The notice's offsets from the map's top and bottom edge, rem (style.css `.notice`). */
 const TOP_REM = 2.6;
 const BOTTOM_REM = 2.3;
+/** Its offset from the map's side when it keeps to the left or right, rem (`data-align`). */
+const EDGE_REM = 0.45;
+/** Where it may go, in order of preference: [top or bottom, centre or side]. */
+const PLACES = [['top', 'center'], ['bottom', 'center'], ['top', 'left'], ['top', 'right'], ['bottom', 'left'], ['bottom', 'right']];
 
 const overlaps = (a, b) =>
   a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
@@ -33,26 +37,37 @@ export function createNotice(box, text, close) {
   close.addEventListener('click', hide);
 
   /**
-   * Puts the notice at the top of the map, or at the bottom when fewer of `clear` (client
-   * boxes: the robot, the goal) are under it there. The candidates are where the style puts
-   * it: its `top` or `bottom` offset from the map's edge.
+   * Puts the notice where fewest of `clear` (client boxes: the robot, the goal) are under it:
+   * at the top of the map or at the bottom, in the middle or along the left or right edge —
+   * the first of these places, in that order of preference, with the fewest. The places are
+   * where the style puts it (`data-place`, `data-align`): its `top` or `bottom` offset from
+   * the map's edge, centred or `EDGE_REM` from a side.
    */
   function place(clear) {
     if (box.hidden) return;
-    let where = 'top';
+    let best = ['top', 'center'];
     const wrap = box.offsetParent?.getBoundingClientRect();
     if (clear.length && wrap) {
       const now = box.getBoundingClientRect();
       const rem = parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
-      const at = (top) => ({ left: now.left, right: now.right, top, bottom: top + now.height });
-      const under = (r) => clear.filter((c) => overlaps(r, {
-        left: c.left - CLEARANCE_PX, right: c.right + CLEARANCE_PX, top: c.top - CLEARANCE_PX, bottom: c.bottom + CLEARANCE_PX,
-      })).length;
-      const atTop = under(at(wrap.top + TOP_REM * rem));
-      const atBottom = under(at(wrap.bottom - BOTTOM_REM * rem - now.height));
-      if (atBottom < atTop) where = 'bottom';
+      const tops = { top: wrap.top + TOP_REM * rem, bottom: wrap.bottom - BOTTOM_REM * rem - now.height };
+      const lefts = {
+        center: wrap.left + (wrap.width - now.width) / 2,
+        left: wrap.left + EDGE_REM * rem,
+        right: wrap.right - EDGE_REM * rem - now.width,
+      };
+      const under = ([v, h]) => clear.filter((c) => overlaps(
+        { left: lefts[h], right: lefts[h] + now.width, top: tops[v], bottom: tops[v] + now.height },
+        { left: c.left - CLEARANCE_PX, right: c.right + CLEARANCE_PX, top: c.top - CLEARANCE_PX, bottom: c.bottom + CLEARANCE_PX },
+      )).length;
+      let fewest = Infinity;
+      for (const candidate of PLACES) {
+        const n = under(candidate);
+        if (n < fewest) [best, fewest] = [candidate, n];
+      }
     }
-    if (box.dataset.place !== where) box.dataset.place = where;
+    if (box.dataset.place !== best[0]) box.dataset.place = best[0];
+    if (box.dataset.align !== best[1]) box.dataset.align = best[1];
   }
 
   return {
