@@ -25,6 +25,7 @@ import { createCompare } from './js/compare.js';
 import { createExercisePanel } from './js/panels/exercise.js';
 import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
 import { errorText } from './js/words.js';
+import { keepRun, takeRun, restoreRun } from './js/carry.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -101,14 +102,20 @@ async function boot() {
   const plots = createPlots($('plots-panel'), app);
   createShare($('share'), $('view'), app);
   const exercise = createExercisePanel($('exercise'), app);
-  // English / 日本語: the page reloads in the other language with this set-up.
+  // English / 日本語: the page reloads in the other language with this run (js/carry.js);
+  // for a map loaded from a file, which cannot be carried, only if the person agrees.
   const languageSelect = $('language');
   languageSelect.value = language();
   languageSelect.addEventListener('change', () => {
-    const r = scenarios.current ? app.attempt(() => demo.share_token()) : { ok: false };
-    switchLanguage(languageSelect.value, r.ok ? r.value : null);
+    const kept = keepRun(app, languageSelect.value);
+    if (!kept.go) {
+      languageSelect.value = language();
+      return;
+    }
+    switchLanguage(languageSelect.value, kept.share ?? null);
   });
   const tabs = createTabs($('panel-tabs'), [...document.querySelectorAll('#panels .tab-panel')], app, 'rtc');
+  app.tabs = tabs;
   const scenarios = createScenarios(
     { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
       description: $('about-description'), lesson: $('about-lesson') },
@@ -137,11 +144,11 @@ async function boot() {
     if (!drawOwed) app.stage.draw();
     const t1 = performance.now();
     if (guard.crashed) return false;
-    // What reads the page's layout (where the robot is on screen) goes before the panels
+    // What reads the page's layout (where the robot and goal are on screen) goes before the panels
     // write to the page: the layout of the last frame is still valid then, and is not made
     // again in the middle of this one.
     legend.update(app.stage.robotBox);
-    app.notice.update(app.stage.robotBox);
+    app.notice.update(app.stage.keepClear);
     frameTimes.push(t1 - t0);
     if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
     simTime.textContent = `${demo.time_s().toFixed(3)} s`;
@@ -187,8 +194,11 @@ async function boot() {
     debugPanic: () => guard.call(() => demo.debug_panic()),
   };
 
-  // A share link (`?share=TOKEN`) opens its set-up; anything else the default scenario.
-  await scenarios.loadDefault(new URLSearchParams(location.search).get('share'));
+  // A run carried from the other language goes on where it was; else a share link
+  // (`?share=TOKEN`) opens its set-up; anything else the default scenario.
+  const carried = takeRun(language());
+  await scenarios.loadDefault(new URLSearchParams(location.search).get('share'),
+    carried && (() => restoreRun(app, carried)));
   document.body.dataset.ready = 'true';
 }
 

@@ -90,3 +90,21 @@ test('every parameter shown has Japanese words: the seed\'s, else the catalogue\
   const have = Object.keys(ja).filter((k) => k.startsWith('param.'));
   assert.deepEqual(have.filter((k) => !wanted.includes(k)), [], 'Japanese for parameters that have the seed\'s words or do not exist');
 });
+
+test('every number a scenario\'s English says is in its Japanese (a changed limit is changed in both)', () => {
+  const dir = join(REPO, 'fixtures', 'scenarios');
+  const numbers = (s) => new Set(s.match(/\d+(?:\.\d+)?/g) ?? []);
+  const wrong = [];
+  for (const f of readdirSync(dir).filter((n) => n.endsWith('.json'))) {
+    const s = JSON.parse(readFileSync(join(dir, f), 'utf8'));
+    const english = { description: s.description, lesson: s.lesson, task: s.exercise?.task };
+    for (const [what, text] of Object.entries(english)) {
+      if (!text) continue;
+      const key = `scenario.${s.name}.${what}`;
+      const said = numbers(ja[key] ?? '');
+      const lost = [...numbers(text)].filter((n) => !said.has(n));
+      if (lost.length) wrong.push(`${key} lacks ${lost.join(', ')}`);
+    }
+  }
+  assert.deepEqual(wrong, []);
+});

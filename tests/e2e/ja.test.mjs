@@ -43,6 +43,9 @@ function visibleText() {
       if (c.nodeType === Node.TEXT_NODE) {
         const p = c.parentElement;
         if (p && p.checkVisibility() && !p.closest('option, script, style')) parts.push(c.textContent);
+      } else if (c.nodeType === Node.ELEMENT_NODE && c.querySelector(':scope > wbr')) {
+        // A name with its line breaks marked (`Posture<wbr>Consideration<wbr>Level`) is one word.
+        if (c.checkVisibility()) parts.push(c.textContent);
       } else if (c.nodeType === Node.ELEMENT_NODE) walk(c);
     }
   };

@@ -339,15 +339,22 @@ impl Inner {
         let last = s.record().telemetry().last();
         let pick = |f: fn(&rtnav::system::TelemetrySample) -> f64| last.map_or(0.0, f);
         let status = self.session.status();
+        // The status as data: `{kind, …fields}` (`Status` is `serde(tag = "kind")`).
+        let mut status_fields = match serde_json::to_value(&status) {
+            Ok(serde_json::Value::Object(m)) => m,
+            _ => serde_json::Map::new(),
+        };
+        let status_kind = match status_fields.remove("kind") {
+            Some(serde_json::Value::String(k)) => k,
+            _ => String::new(),
+        };
         TelemetryView {
             time_s: s.time(),
             state: s.state(),
             driving: s.is_driving(),
             status: status.to_string(),
-            status_kind: serde_json::to_value(&status)
-                .ok()
-                .and_then(|v| v.get("kind").and_then(|k| k.as_str().map(str::to_owned)))
-                .unwrap_or_default(),
+            status_kind,
+            status_fields,
             arrived: m.is_arrived(),
             halted: m.is_halted(),
             paused: self.session.paused(),

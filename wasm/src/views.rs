@@ -111,6 +111,9 @@ pub(crate) struct TelemetryView {
     /// Which [`Status`](rtnav::system::Status) it is (`driving`, `arrived`, `no_route`, …):
     /// what the page ties its notices to.
     pub status_kind: String,
+    /// Its fields (`component`, `reason`, `by`, `direction`, `retrying`, `v_cmd`, …), so the
+    /// page can say the status in its own language with the same details.
+    pub status_fields: serde_json::Map<String, serde_json::Value>,
     pub arrived: bool,
     pub halted: bool,
     pub paused: bool,

@@ -7,6 +7,7 @@
 import { CompareView } from '../pkg/rtnav_wasm.js';
 import { el } from './dom.js';
 import { t, has } from './i18n.js';
+import { scenarioTitle } from './scenarios.js';
 
 const WIDTH = 640;
 const HEIGHT = 400;
@@ -108,7 +109,7 @@ export function createCompare(formRoot, viewRoot, app) {
     const bytes = new Uint8ClampedArray(app.memory.buffer, view.frame_ptr(), view.frame_len());
     canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(bytes), WIDTH, HEIGHT), 0, 0);
     const data = JSON.parse(view.table_json());
-    title.textContent = t('compare.title_on', { scenario: data.scenario.replaceAll('_', ' '), what });
+    title.textContent = t('compare.title_on', { scenario: scenarioTitle(data.scenario), what });
     table.replaceChildren(
       el('thead', {}, el('tr', {}, el('th', {}, ''), el('th', {}, 'A'), el('th', {}, t('compare.col.b')))),
       el('tbody', {}, ...data.rows.map(([m, a, b]) => el('tr', { dataset: { measure: m } },

@@ -5,7 +5,7 @@
 //
 // The language: `?lang=` in the address (a share link carries it) first, then the choice
 // kept in local storage, then the browser's language. Switching reloads the page in the
-// other language with the current set-up as a share link, so every string is drawn anew.
+// other language, so every string is drawn anew; the run goes with it (`carry.js`).
 export const LANGUAGES = ['en', 'ja'];
 const STORAGE_KEY = 'rtnav.lang';
 
@@ -124,20 +124,33 @@ export function translateStatic(root = document) {
   document.title = t('page.title');
 }
 
-/** Keeps `next` and reloads the page in it, with `share` (a set-up token) if given. */
+/**
+ * Keeps `next` and reloads the page in it, with `share` (a set-up token) if given; without
+ * one, the address names no set-up (the run itself is carried: `carry.js`).
+ */
 export function switchLanguage(next, share = null) {
   try { localStorage.setItem(STORAGE_KEY, next); } catch { /* not kept: the address says it */ }
   const params = new URLSearchParams(location.search);
   params.set('lang', next);
   if (share) params.set('share', share);
+  else params.delete('share');
   location.search = params.toString();
 }
 
-/** A number as the language writes it (the core's own numbers are already text). */
+/**
+ * A number as the language writes it (the core's own numbers are already text); one that
+ * rounds to zero is "0", never "-0".
+ */
 export function num(value, digits) {
   return Number(value).toLocaleString(lang === 'ja' ? 'ja-JP' : 'en-GB', {
-    maximumFractionDigits: digits, minimumFractionDigits: 0, useGrouping: false,
+    maximumFractionDigits: digits, minimumFractionDigits: 0, useGrouping: false, signDisplay: 'negative',
   });
+}
+
+/** `v` with `digits` decimals (`toFixed`), but "0.00" for a value that rounds to zero, never "-0.00". */
+export function fixed(v, digits) {
+  const s = Number(v).toFixed(digits);
+  return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
 }
 
 // The catalogues are loaded before any module that imports this one runs (top-level await):

@@ -38,8 +38,8 @@ export function createLegend(details, body, canvas, app) {
   });
   const lo = el('span', { class: 'heat-lo' });
   const hi = el('span', { class: 'heat-hi' });
-  const heat = el('div', { class: 'heat', id: 'legend-heat', title: 'LocalPathPlanning\'s potential, log scale: low (dark) near the local target, high (yellow) far from it' },
-    el('span', { class: 'heat-title' }, 'potential (log)'),
+  const heat = el('div', { class: 'heat', id: 'legend-heat', title: t('legend.potential.title') },
+    el('span', { class: 'heat-title' }, t('legend.potential')),
     el('span', { class: 'heat-bar', 'aria-hidden': 'true' }),
     el('span', { class: 'heat-labels' }, lo, hi));
   const bar = el('span', { class: 'scale-bar', 'aria-hidden': 'true' });

@@ -22,6 +22,12 @@ async function fetchOk(url, how) {
   return how === 'text' ? r.text() : new Uint8Array(await r.arrayBuffer());
 }
 
+/** A scenario's title in the page's language (`scenario_title.NAME`; else its name, spaced). */
+export function scenarioTitle(name) {
+  const key = `scenario_title.${name}`;
+  return has(key) ? t(key) : String(name).replaceAll('_', ' ');
+}
+
 /** A scenario's `description` or `lesson` in the page's language (the file's own is English). */
 function scenarioText(s, what) {
   const key = `scenario.${s.name}.${what}`;
@@ -38,7 +44,7 @@ export function createScenarios(dom, app) {
     const s = JSON.parse(demo.scenario_json());
     const map = JSON.parse(demo.map_json());
     if (s) {
-      dom.title.textContent = t('scenarios.about', { name: s.name.replaceAll('_', ' ') });
+      dom.title.textContent = t('scenarios.about', { name: scenarioTitle(s.name) });
       dom.description.textContent = scenarioText(s, 'description');
       showLesson(scenarioText(s, 'lesson'));
     } else {
@@ -76,7 +82,7 @@ export function createScenarios(dom, app) {
   async function load(name, share = null) {
     const entry = index.scenarios.find((s) => s.name === name);
     if (!entry) {
-      app.notice.show(t('scenarios.no_such', { name }), 'error');
+      app.notice.show(t('scenarios.no_such', { name: scenarioTitle(name) }), 'error');
       return false;
     }
     const files = new Files();
@@ -93,8 +99,8 @@ export function createScenarios(dom, app) {
         if (!s.ok) return { shareError: s.error };
       }
     } catch (e) {
-      app.notice.show(t('scenarios.load_failed', { name, error: e.message ?? e }), 'error');
-      app.log.page(t('scenarios.not_loaded', { name, error: e.message ?? e }), 'error');
+      app.notice.show(t('scenarios.load_failed', { name: scenarioTitle(name), error: e.message ?? e }), 'error');
+      app.log.page(t('scenarios.not_loaded', { name: scenarioTitle(name), error: e.message ?? e }), 'error');
       dom.select.value = current ?? CUSTOM;
       return false;
     } finally {
@@ -106,8 +112,8 @@ export function createScenarios(dom, app) {
     // (and of a share link) is the set-up at its own time.
     app.stage.draw();
     loaded(share === null
-      ? t('scenarios.loaded', { name })
-      : t('scenarios.shared_loaded', { name }));
+      ? t('scenarios.loaded', { name: scenarioTitle(name) })
+      : t('scenarios.shared_loaded', { name: scenarioTitle(name) }));
     return true;
   }
 
@@ -121,11 +127,11 @@ export function createScenarios(dom, app) {
     }
     if (name === undefined) return false;
     if (!index.scenarios.some((s) => s.name === name)) {
-      return refuseShare(t('scenarios.share_unknown', { name }));
+      return refuseShare(t('scenarios.share_unknown', { name: scenarioTitle(name) }));
     }
     const r = await load(name, token);
     if (r === true) {
-      app.notice.show(t('scenarios.shared_notice', { name: name.replaceAll('_', ' ') }), 'success');
+      app.notice.show(t('scenarios.shared_notice', { name: scenarioTitle(name) }), 'success');
       return true;
     }
     if (r && r.shareError) return refuseShare(r.shareError);
@@ -176,15 +182,17 @@ export function createScenarios(dom, app) {
     load,
     loadFiles,
     /**
-     * Reads the index, fills the picker and loads the set-up of the share link `share` if
-     * given and good, else the default scenario.
+     * Reads the index, fills the picker and loads: the run `carried()` restores (a run
+     * carried from the other language) if it does, else the set-up of the share link
+     * `share` if given and good, else the default scenario.
      */
-    async loadDefault(share = null) {
+    async loadDefault(share = null, carried = null) {
       index = JSON.parse(await fetchOk(INDEX_URL, 'text'));
       dom.select.replaceChildren(
-        ...index.scenarios.map((s) => el('option', { value: s.name, title: scenarioText(s, 'description') }, s.name.replaceAll('_', ' '))),
+        ...index.scenarios.map((s) => el('option', { value: s.name, title: scenarioText(s, 'description') }, scenarioTitle(s.name))),
         custom,
       );
+      if (carried && await carried()) return;
       if (share !== null && await loadShared(share)) return;
       const first = index.default ?? index.scenarios[0]?.name;
       if (first) await load(first);

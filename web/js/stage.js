@@ -12,7 +12,7 @@
 // right mouse button, or two fingers drag the picture; Fit shows the whole map again.
 // A paint stroke is one MapUpdate, sent when the stroke ends (issue 15): the cells under the
 // brush are gathered while it moves and previewed on the overlay.
-import { t } from './i18n.js';
+import { t, fixed } from './i18n.js';
 
 const TOOL_HINTS = {
   goal: t('hint.goal'),
@@ -42,7 +42,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   let len = 0;
   let drawn = false;
   let blitAgain = true;
-  let fixed = null;
+  let fixedSize = null;
   let map = null;
   let hover = null;
   let drag = null;
@@ -53,7 +53,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   function fit() {
     const rect = wrap.getBoundingClientRect();
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
-    const [w, h] = fixed ?? [
+    const [w, h] = fixedSize ?? [
       Math.max(64, Math.round(rect.width * dpr)),
       Math.max(64, Math.round(rect.height * dpr)),
     ];
@@ -75,7 +75,7 @@ export function createStage(wrap, view, overlay, hint, app) {
    * In the one-column layout (a narrow window) the map's box takes the map's own aspect —
    * between 260 px and 70 % of the window's height — instead of a fixed share of the window.
    */
-  const oneColumn = window.matchMedia('(max-width: 980px)');
+  const oneColumn = window.matchMedia('(max-width: 1080px)');
   function fitHeight() {
     if (!map || !oneColumn.matches) {
       wrap.style.removeProperty('--map-h');
@@ -112,7 +112,7 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   const telemetry = () => JSON.parse(demo.telemetry_json());
   const plan = () => JSON.parse(demo.plan_json());
-  const fmt = (p) => `(${p.x.toFixed(2)} m, ${p.y.toFixed(2)} m, ${Math.round(p.theta_deg)}°)`;
+  const fmt = (p) => `(${fixed(p.x, 2)} m, ${fixed(p.y, 2)} m, ${fixed(p.theta_deg, 0)}°)`;
 
   function refused(what, error, kept) {
     app.notice.show(t('refused.kept', { what, error, kept }), 'error');
@@ -382,7 +382,12 @@ export function createStage(wrap, view, overlay, hint, app) {
     const d = drag;
     drag = null;
     if (d.tool === 'pan') {
-      // Done while moving.
+      // Moved while dragging; a tap without a drag inspects the cell under it (a finger has
+      // no hover: this is how a phone reaches the Inspector).
+      if (Math.hypot(d.p[0] - d.p0[0], d.p[1] - d.p0[1]) < MIN_DRAG_PX) {
+        const cell = demo.pixel_to_cell(d.p0[0], d.p0[1]);
+        if (cell) app.emit('hover', cell);
+      }
     } else if (d.tool === 'paint' || d.tool === 'erase') {
       sendStroke(d.tool);
     } else {
@@ -495,6 +500,29 @@ export function createStage(wrap, view, overlay, hint, app) {
     };
   }
 
+  /** Canvas pixels around the goal point its arrow can reach (the renderer's 18 px arrow). */
+  const GOAL_REACH_PX = 22;
+
+  /** The goal's marker on the page (client coordinates), or null when there is none. */
+  function goalBox() {
+    if (!map) return null;
+    const goal = telemetry().goal;
+    const p = goal && demo.world_to_pixel(goal.x, goal.y);
+    if (!p) return null;
+    const r = overlay.getBoundingClientRect();
+    const sx = r.width / overlay.width;
+    const sy = r.height / overlay.height;
+    return {
+      left: r.left + (p[0] - GOAL_REACH_PX) * sx,
+      right: r.left + (p[0] + GOAL_REACH_PX) * sx,
+      top: r.top + (p[1] - GOAL_REACH_PX) * sy,
+      bottom: r.top + (p[1] + GOAL_REACH_PX) * sy,
+    };
+  }
+
+  /** What a notice over the map must not cover: the robot and the goal (client boxes). */
+  const keepClear = () => [robotBox(), goalBox()].filter(Boolean);
+
   function setTool(tool) {
     app.ui.tool = tool;
     overlay.dataset.tool = tool;
@@ -516,6 +544,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   return {
     draw,
     robotBox,
+    keepClear,
     zoomAt,
     panBy,
     fitView,
@@ -523,7 +552,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     setStart,
     resubmitDirection,
     setFixedSize(w, h) {
-      fixed = w && h ? [w, h] : null;
+      fixedSize = w && h ? [w, h] : null;
       fit();
     },
   };

@@ -217,6 +217,21 @@ export function eventWords(e, say = t, reason = reasonText) {
   return say(key, { ...d, ...extra });
 }
 
+/**
+ * What the robot is doing (the core's `Status`: its `kind` and fields, the telemetry's
+ * `status_kind` and `status_fields`) said through `status.<kind>` with its details — which
+ * component, why — in the page's language. `say` and `reason` as for `eventWords`: with the
+ * English catalogue and the reasons as given, this is the core's own English text
+ * (`tests/e2e/qa.test.mjs` compares them).
+ */
+export function statusText(kind, fields = {}, say = t, reason = reasonText) {
+  const vars = { ...fields };
+  for (const k of ['reason', 'retrying']) if (typeof vars[k] === 'string') vars[k] = reason(vars[k]);
+  if (typeof fields.direction === 'string') vars.direction = say(`status.direction.${fields.direction}`);
+  const key = kind === 'waiting_for_plan' && fields.retrying ? 'status.waiting_for_plan.retrying' : `status.${kind}`;
+  return say(key, vars);
+}
+
 /** `text`, a component's status line from the core, in the page's language. */
 export function componentStatus(text) {
   if (language() === 'en') return text;

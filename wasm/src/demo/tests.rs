@@ -365,3 +365,25 @@ fn layers_by_name_and_the_view() {
         "MapUpdate: 2 x indices but 1 y indices"
     );
 }
+
+#[test]
+fn the_status_comes_with_its_fields_for_the_page_to_say() {
+    let mut demo = loaded("open_field");
+    let t = demo.telemetry();
+    assert_eq!(t.status_kind, "ready");
+    assert!(t.status_fields.is_empty(), "{:?}", t.status_fields);
+    demo.all(&Input::ActivateAll);
+    demo.inject_fault("DriveControl").unwrap();
+    run(&mut demo, 0.1, |_| false);
+    let t = demo.telemetry();
+    assert_eq!(t.status_kind, "component_error");
+    assert_eq!(
+        serde_json::Value::Object(t.status_fields),
+        serde_json::json!({
+            "component": "DriveControl0",
+            "reason": format!("injected fault: {FAULT_REASON}"),
+        }),
+        "{}",
+        t.status
+    );
+}

@@ -10,21 +10,20 @@
 // stage's `hover` event (`pixel_to_cell`); it is read again while shown, a few times a
 // second, because the field changes as the robot drives.
 import { el, setText } from '../dom.js';
-import { t, has } from '../i18n.js';
+import { t, has, fixed } from '../i18n.js';
 
 const POLL_MS = 250;
 
-const yesNo = (b) => t(b ? 'inspector.yes' : 'inspector.no');
 function num(v, digits = 3) {
   if (v === null || v === undefined) return '—';
   if (!Number.isFinite(v)) return String(v);
   const a = Math.abs(v);
   if (a !== 0 && (a >= 1e5 || a < 1e-3)) return v.toExponential(3);
-  return v.toFixed(digits);
+  return fixed(v, digits);
 }
 
 /** The rows: key, label, how to read it from the answer, how to show it, a hint. */
-const metres = (v) => `${v.toFixed(2)} m`;
+const metres = (v) => `${fixed(v, 2)} m`;
 const FIELDS = [
   ['cell', t('inspector.cell'), (j) => [j.x, j.y], (v) => `(${v[0]}, ${v[1]})`, t('inspector.cell.title')],
   ['centre', t('inspector.centre'), (j) => j.centre, (v) => `x ${metres(v[0])}, y ${metres(v[1])}`, t('inspector.centre.title')],
@@ -38,7 +37,6 @@ const FIELDS = [
   ['attraction', t('inspector.attraction'), (j) => j.field?.attraction ?? null, num, t('inspector.attraction.title')],
   ['posture', t('inspector.posture'), (j) => j.field?.posture ?? null, num, t('inspector.posture.title')],
   ['state', t('inspector.state'), (j) => j.field?.state ?? null, (v) => (v === null ? '—' : has(`inspector.state.${v}`) ? t(`inspector.state.${v}`) : v), t('inspector.state.title')],
-  ['unreached', t('inspector.unreached'), (j) => (j.field ? j.field.unreached : null), (v) => (v === null ? '—' : yesNo(v)), t('inspector.unreached.title')],
 ];
 
 export function createInspector(root, app) {

@@ -32,6 +32,11 @@ const NOTES = {
 const show = (v) => (v === null || v === undefined ? '' : String(v));
 const unitText = (u) => (!u || u === '-' ? '–' : u);
 
+/** A parameter's name with a break allowed between its words (`Posture<wbr>Consideration<wbr>Level`). */
+function wordsOf(name) {
+  return name.split(/(?<=[a-z0-9])(?=[A-Z])/).flatMap((w, i) => (i ? [el('wbr'), w] : [w]));
+}
+
 export function createParamsPanel(root, app) {
   const { demo } = app;
   let last = '';
@@ -125,7 +130,7 @@ export function createParamsPanel(root, app) {
     // The description in the page's language: the seed's own Japanese, else the catalogue's.
     const described = language() === 'ja' ? (p.seed_text ?? t(`param.${c.component}.${p.name}`)) : p.description;
     const node = el('div', { class: 'param', dataset: { component: c.component, name: p.name, reflection: p.reflection } },
-      el('label', { class: 'param-name', for: id, title: described }, p.name),
+      el('label', { class: 'param-name', for: id, title: described }, ...wordsOf(p.name)),
       input,
       el('span', { class: 'param-unit' }, unitText(p.unit)),
       el('div', { class: 'param-desc', id: `${id}-desc` },

@@ -81,7 +81,9 @@ export function createRtcPanel(root, app) {
         setText(r.badge, c.state);
         setText(r.name, c.instance_name);
         setText(r.rate, `${c.rate} Hz`);
-        setText(r.status, componentStatus(c.status));
+        // A component in Error does not execute (spec §1: only on_error runs): what it last
+        // did is not what it does.
+        setText(r.status, c.state === 'Error' ? t('rtc.not_executing') : componentStatus(c.status));
         const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: reasonText(c.last_error) }) : '';
         setText(r.reason, why);
         r.reason.hidden = !why;

@@ -2,7 +2,8 @@
 // goal is, what the planners have done. `data-*` attributes carry the raw values (the
 // end-to-end test reads them).
 import { el, setText } from '../dom.js';
-import { t, has, language } from '../i18n.js';
+import { t, has, language, fixed } from '../i18n.js';
+import { statusText } from '../words.js';
 
 const FIELDS = [
   ['status', t('telemetry.status')],
@@ -32,15 +33,16 @@ export function createTelemetry(root, app) {
       root.dataset.distance = v.distance_to_goal ?? '';
       root.dataset.bumps = v.bumps;
       root.dataset.localPlans = v.local_plans;
-      set('pose', `${v.pose.x.toFixed(2)}, ${v.pose.y.toFixed(2)} m · ${Math.round(v.pose.theta_deg)}°`);
-      set('speed', `${v.v.toFixed(2)} m/s · ${v.w.toFixed(2)} rad/s`);
-      set('goal', v.distance_to_goal === null ? '—' : `${v.distance_to_goal.toFixed(2)} m`);
-      set('driven', `${v.path_length.toFixed(2)} m`);
+      set('pose', `${fixed(v.pose.x, 2)}, ${fixed(v.pose.y, 2)} m · ${fixed(v.pose.theta_deg, 0)}°`);
+      set('speed', `${fixed(v.v, 2)} m/s · ${fixed(v.w, 2)} rad/s`);
+      set('goal', v.distance_to_goal === null ? '—' : `${fixed(v.distance_to_goal, 2)} m`);
+      set('driven', `${fixed(v.path_length, 2)} m`);
       root.dataset.status = v.status_kind;
       set('plans', t('telemetry.plans.value', { global: v.global_plans, local: v.local_plans }));
       // What the core says is true (rtnav::system::Status), not guessed here.
-      // The core's words in English; in another language, the catalogue's for the status's kind.
-      const said = language() !== 'en' && has(`status.${v.status_kind}`) ? t(`status.${v.status_kind}`) : v.status;
+      // The core's words in English; in another language, the catalogue's for the status's
+      // kind, with its fields (which component, why).
+      const said = language() !== 'en' && has(`status.${v.status_kind}`) ? statusText(v.status_kind, v.status_fields) : v.status;
       let status = said.charAt(0).toUpperCase() + said.slice(1);
       if (v.paused) status += t('telemetry.paused');
       set('status', status);

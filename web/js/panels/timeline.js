@@ -12,6 +12,7 @@ import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
 import { t, language } from '../i18n.js';
 import { errorText } from '../words.js';
+import { scenarioTitle } from '../scenarios.js';
 
 const POLL_MS = 200;
 
@@ -38,12 +39,12 @@ export function createTimeline(root, app) {
   };
 
   const play = el('button', {
-    type: 'button', id: 'tl-play', class: 'plain', title: t('timeline.play.title'),
+    type: 'button', id: 'tl-play', class: 'plain', title: t('pause.title'),
     onclick: () => {
       demo.set_paused(!demo.paused());
       refresh(true);
     },
-  }, t('timeline.pause'));
+  }, t('pause.label'));
   const back = el('button', {
     type: 'button', id: 'tl-back', class: 'plain', 'aria-label': t('timeline.back.aria'),
     title: t('timeline.back.title'),
@@ -134,7 +135,7 @@ export function createTimeline(root, app) {
     } catch (e) {
       return say(t('timeline.replay_refused', { error: errorText(e) }), 'error');
     }
-    if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name }), 'error');
+    if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name: scenarioTitle(name) }), 'error');
     demo.set_paused(true);
     const r = app.attempt(() => JSON.parse(demo.load_replay(text)));
     jumped();
@@ -146,10 +147,10 @@ export function createTimeline(root, app) {
     const hash = c.hash.slice(0, 12);
     if (c.matches) {
       say(t('timeline.loaded', { where }), 'success');
-      app.log.page(t('timeline.loaded.log', { name, where, hash }), 'info');
+      app.log.page(t('timeline.loaded.log', { name: scenarioTitle(name), where, hash }), 'info');
     } else {
       say(t('timeline.differs', { where }), 'error');
-      app.log.page(t('timeline.differs.log', { name, hash, expected: c.expected_hash.slice(0, 12) }), 'error');
+      app.log.page(t('timeline.differs.log', { name: scenarioTitle(name), hash, expected: c.expected_hash.slice(0, 12) }), 'error');
     }
     return c;
   }
@@ -174,7 +175,8 @@ export function createTimeline(root, app) {
     lastPoll = now;
     const r = app.attempt(() => JSON.parse(demo.timeline_json()));
     const paused = demo.paused();
-    setText(play, paused ? t('timeline.play') : t('timeline.pause'));
+    // The same words as the system bar's button: Run while paused, Pause while running.
+    setText(play, paused ? t('run.label') : t('pause.label'));
     play.classList.toggle('active', paused);
     if (!r.ok) {
       root.dataset.enabled = 'false';

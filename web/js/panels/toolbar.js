@@ -135,6 +135,19 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     if (layerMenu.open && body.getBoundingClientRect().left < 0) body.classList.add('to-right');
   });
 
+  // A run carried across a change of language (js/carry.js): the controls show its settings.
+  app.on('carried', () => {
+    showDirection();
+    speed.value = String(demo.speed());
+    brushUnit.value = app.ui.brush.unit;
+    fillBrush();
+    const now = JSON.parse(demo.layers_json());
+    for (const label of layerBoxes) {
+      const box = label.querySelector('input');
+      box.checked = Boolean(now[box.id.replace(/^layer-/, '')]);
+    }
+  });
+
   // ---- zoom (over the map, top right)
   const zoomIn = el('button', { type: 'button', id: 'zoom-in', class: 'plain', title: t('zoom.in.title'), 'aria-label': t('zoom.in'), onclick: () => app.stage.zoomAt(1.5) }, '+');
   const zoomOut = el('button', { type: 'button', id: 'zoom-out', class: 'plain', title: t('zoom.out.title'), 'aria-label': t('zoom.out'), onclick: () => app.stage.zoomAt(1 / 1.5) }, '−');
