@@ -6,6 +6,8 @@ import { t, has, language, englishWords } from './i18n.js';
 
 /** [pattern, key, names of the captured parts]. */
 const FORMS = [
+  [/^in Error, not executing$/, 'rtcstatus.in_error', []],
+  [/^in Error, not executing: (.+)$/, 'rtcstatus.in_error_because', ['reason']],
   [/^map (\d+)×(\d+) at ([\d.]+) m$/, 'rtcstatus.map', ['w', 'h', 'g']],
   [/^no map$/, 'rtcstatus.no_map', []],
   [/^(\d+) updates? sent$/, 'rtcstatus.updates', ['n']],
