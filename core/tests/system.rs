@@ -639,10 +639,10 @@ fn rates_beyond_a_kilohertz_or_off_the_base_tick_are_refused_where_they_enter() 
 
 #[test]
 fn a_map_of_tiny_cells_loads_at_once() {
-    // 40 × 40 cells of 10 µm under a body of radius 0.45 m: loading it checks the body
-    // against the map (and a ring of outside cells), not against 8·10⁹ cells of its box.
+    // 40 × 40 cells of 0.1 mm under a body of radius 0.45 m: loading it checks the body
+    // against the map (and a ring of outside cells), not against 8·10⁷ cells of its box.
     let mut s = System::new(Rates::default()).unwrap();
-    s.load_map(GridMap::new(40, 40, 1e-5, (0.0, 0.0), vec![0; 1600]).unwrap());
+    s.load_map(GridMap::new(40, 40, 1e-4, (0.0, 0.0), vec![0; 1600]).unwrap());
     let e = s
         .apply(&Input::SetPosition {
             start: Pose::new(0.0002, 0.0002, 0.0),
