@@ -79,7 +79,7 @@ const META: [&str; 3] = ["__constraints__", "__type__", "__description__"];
 
 /// `text` without a leading UTF-8 byte order mark (U+FEFF, which some editors write at the
 /// start of a file and `str::trim` keeps): the one place every text reader of rtnav — `.conf`
-/// files and bundles, scenario and replay JSON — drops it.
+/// files and bundles, scenario and replay JSON, the map formats — drops it.
 pub fn without_bom(text: &str) -> &str {
     text.strip_prefix('\u{feff}').unwrap_or(text)
 }

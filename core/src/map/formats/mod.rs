@@ -20,13 +20,6 @@ pub mod movingai;
 pub mod ros;
 mod yaml_mapping;
 
-/// `text` without one leading UTF-8 byte-order mark (the bytes EF BB BF, which Windows
-/// Notepad writes at the start of a file): every text format reads a file with it as the
-/// same file without.
-fn without_bom(text: &str) -> &str {
-    text.strip_prefix('\u{feff}').unwrap_or(text)
-}
-
 /// `text` as an error message quotes it: at most [`SHOWN`] characters, cut with `…`, so a
 /// file that is not what it should be (one enormous line or value) gives a short message.
 fn shown(text: &str) -> String {

@@ -76,7 +76,7 @@ fn once<T>(slot: &mut Option<T>, value: T, key: &str, n: usize) -> Result<(), Ma
 /// Reads a `.map` file into a [`GridMap`] with `GridSize` 1 m and origin (0, 0), rows
 /// flipped as the module documentation says.
 pub fn load_map(text: &str) -> Result<GridMap, MapError> {
-    let mut it = lines(super::without_bom(text));
+    let mut it = lines(crate::rtc::without_bom(text));
     let (mut width, mut height, mut kind) = (None, None, None);
     let mut last_line = 0;
     loop {
@@ -227,7 +227,7 @@ impl ScenProblem {
 /// Reads a `.scen` file (version 1 / 1.0). Every coordinate is checked to lie inside the
 /// map size given on its line.
 pub fn load_scen(text: &str) -> Result<Vec<ScenProblem>, MapError> {
-    let mut it = lines(super::without_bom(text));
+    let mut it = lines(crate::rtc::without_bom(text));
     match it.next() {
         Some((n, line)) => {
             let words: Vec<&str> = line.split_whitespace().collect();

@@ -143,7 +143,7 @@ pub fn parse_yaml(text: &str) -> Result<RosMapYaml, MapError> {
         line: p.line,
         reason: p.reason,
     };
-    let text = super::without_bom(text);
+    let text = crate::rtc::without_bom(text);
     if text.len() > MAX_YAML_BYTES {
         return Err(yaml_err(format!(
             "the file has {} bytes; a map's YAML is a few lines (at most {MAX_YAML_BYTES} bytes)",
