@@ -37,6 +37,12 @@ pub fn fixed(v: f64, decimals: usize) -> String {
     }
 }
 
+/// A position as people read it (spec §7): metres first, the map cell in parentheses —
+/// `(1.55 m, 1.55 m) (cell 15, 15)`.
+pub fn place((x, y): (f64, f64), (i, j): (usize, usize)) -> String {
+    format!("({} m, {} m) (cell {i}, {j})", number(x), number(y))
+}
+
 fn trim(s: &str) -> String {
     let t = if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.')
@@ -52,7 +58,15 @@ fn trim(s: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{fixed, number};
+    use super::{fixed, number, place};
+
+    #[test]
+    fn places_read_in_metres_with_the_cell() {
+        assert_eq!(
+            place((1.55 + 1e-15, 0.05), (15, 0)),
+            "(1.55 m, 0.05 m) (cell 15, 0)"
+        );
+    }
 
     #[test]
     fn fixed_decimals_never_say_minus_zero() {

@@ -130,7 +130,9 @@ fn planner_errors_name_the_problem() {
         astar.plan((1, 1), (10, 5)),
         Err(GlobalPlanningError::NoPath {
             start: (1, 1),
-            goal: (10, 5)
+            goal: (10, 5),
+            start_at: (1.5, 1.5),
+            goal_at: (10.5, 5.5),
         })
     );
     assert_eq!(astar.plan((3, 3), (3, 3)).unwrap().cells, vec![(3, 3)]);
@@ -265,7 +267,7 @@ fn dmin_blocks_cells_near_obstacles_and_takes_effect_at_the_next_plan() {
     rig.request(at((1, 3), g), at((10, 3), g));
     assert!(!rig.course.is_new());
     let reason = rig.failure_reason();
-    assert!(reason.contains("goal cell (10, 3) is blocked"), "{reason}");
+    assert!(reason.contains("(cell 10, 3) is blocked"), "{reason}");
     assert!(matches!(
         rig.gpp().last_error(),
         Some(GlobalPlanningError::Blocked {
@@ -320,7 +322,7 @@ fn outside_and_unreachable_goals_are_reported_on_the_failure_port() {
     rig.request(at((1, 1), 1.0), at((10, 5), 1.0));
     assert_eq!(
         rig.failure_reason(),
-        "no path from cell (1, 1) to cell (10, 5)"
+        "no path from (1.5 m, 1.5 m) (cell 1, 1) to (10.5 m, 5.5 m) (cell 10, 5)"
     );
     let failure = rig.failure.peek().unwrap();
     assert_eq!(failure.planner, "GlobalPathPlanning");

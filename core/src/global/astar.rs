@@ -175,6 +175,8 @@ pub struct AStar {
     generation: u8,
     small: Scratch<u64>,
     large: Scratch<u128>,
+    /// The map's `GridSize` and origin, to say cells as positions in metres.
+    geometry: (f64, (f64, f64)),
 }
 
 impl AStar {
@@ -195,6 +197,7 @@ impl AStar {
             generation: 0,
             small: Scratch::default(),
             large: Scratch::default(),
+            geometry: (map.grid_size(), map.origin()),
         };
         planner.mark(map, 0, 0, w, h);
         Ok(planner)
@@ -205,6 +208,7 @@ impl AStar {
     /// distance changed since are marked again (the map's change log), or all of them if
     /// that cannot be told. A map of another size gives a new planner.
     pub fn sync(&mut self, map: &GridMap) {
+        self.geometry = (map.grid_size(), map.origin());
         if map.width() != self.width || map.height() != self.height {
             if let Ok(fresh) = Self::new(map, self.dmin) {
                 *self = fresh;
@@ -326,6 +330,12 @@ impl AStar {
         self.plan_with(start, goal, wide, false)
     }
 
+    /// The centre of `cell` in metres (map frame).
+    fn centre(&self, (x, y): Cell) -> (f64, f64) {
+        let (g, (ox, oy)) = self.geometry;
+        (ox + (x as f64 + 0.5) * g, oy + (y as f64 + 0.5) * g)
+    }
+
     /// Whether costs need the `u128` key: every cost met has at most (passable cells − 1)
     /// steps of g plus max(width, height) steps of h.
     fn wide(&self) -> bool {
@@ -355,6 +365,7 @@ impl AStar {
                 return Err(GlobalPlanningError::Blocked {
                     which,
                     cell,
+                    at: self.centre(cell),
                     dmin: self.dmin,
                 });
             }
@@ -382,7 +393,12 @@ impl AStar {
             (true, false) => search.run(s, t, start, &mut self.large),
         };
         let Some(expanded) = found else {
-            return Err(GlobalPlanningError::NoPath { start, goal });
+            return Err(GlobalPlanningError::NoPath {
+                start,
+                goal,
+                start_at: self.centre(start),
+                goal_at: self.centre(goal),
+            });
         };
         let parents = match (jump, wide) {
             (false, _) => None,

@@ -1,4 +1,7 @@
-//! Errors of the global planner (spec §5 "GlobalPathPlanning").
+//! Errors of the global planner (spec §5 "GlobalPathPlanning"). Positions are said in
+//! metres with the cell in parentheses ([`crate::present::place`], spec §7).
+
+use crate::present::place;
 
 /// Errors of the global planner (spec §5 "GlobalPathPlanning"). Each is also sent as a
 /// `PlanningFailure` notice by the component.
@@ -46,24 +49,30 @@ pub enum GlobalPlanningError {
     /// A start or goal cell that is an obstacle or lies within `dmin` of one (its obstacle
     /// distance is ≤ `dmin`).
     #[error(
-        "{which} cell ({}, {}) is blocked: it is an obstacle or within dmin = {dmin} m of one",
-        cell.0, cell.1
+        "{which} {} is blocked: it is an obstacle or within dmin = {dmin} m of one",
+        place(*at, *cell)
     )]
     Blocked {
         /// `start` or `goal`.
         which: &'static str,
         /// The cell.
         cell: (usize, usize),
+        /// The cell's centre (m).
+        at: (f64, f64),
         /// The `dmin` in force (m).
         dmin: f64,
     },
     /// No path joins start and goal.
-    #[error("no path from cell ({}, {}) to cell ({}, {})", start.0, start.1, goal.0, goal.1)]
+    #[error("no path from {} to {}", place(*start_at, *start), place(*goal_at, *goal))]
     NoPath {
         /// The start cell.
         start: (usize, usize),
         /// The goal cell.
         goal: (usize, usize),
+        /// The start cell's centre (m).
+        start_at: (f64, f64),
+        /// The goal cell's centre (m).
+        goal_at: (f64, f64),
     },
     /// A `dmin` that is negative or not finite.
     #[error("dmin {value} m must be finite and ≥ 0")]

@@ -17,11 +17,18 @@
 //! ```
 //!
 //! **Decision (the drive)**: times count from the start of the drive (the physics made
-//! Active, as the timeline's). The exercise ends at arrival, at a bump, when a check has
-//! failed (the verdict cannot change any more) or at the scenario's `time_limit` after the
-//! start. Then every check still open is settled: a check that waits for something
-//! (arrival, a speed, a recovery) fails, a check that forbids something (a bump, too many
-//! plans) passes.
+//! Active, as the timeline's). The exercise ends when the run ends: at arrival (the
+//! system's, at rest within the goal's tolerances, spec §7), at a bump, or at the
+//! scenario's `time_limit` after the start. A check that fails on the way does not end it:
+//! the others go on being decided, and every measured value goes on being measured, until
+//! the run ends. Then every check still open is settled — none is left undecided (spec §7
+//! Decision 0.3 "exercise checks"): a check that waits for something (arrival, a speed, a
+//! recovery) fails, a check that forbids something (a bump, too many plans) passes.
+//!
+//! **Decision (values)**: a check's measured value has one meaning and one unit
+//! ([`Check::unit`]), decided or not: the time of arrival \[s\], the heading error \[°\],
+//! the clearance \[m\], the plans made, the time to reach a speed \[s\] (also when it came
+//! late), the overshoot \[%\], the distance driven backward \[m\].
 //!
 //! **Decision (the rules)**: besides its checks, an exercise always checks that only the
 //! parameters of `may_change` differ from the scenario's configuration (`dmin` is one value
@@ -128,7 +135,53 @@ pub enum Check {
     OnlyAllowed,
 }
 
+/// The unit of a check's measured value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Unit {
+    /// Seconds.
+    #[serde(rename = "s")]
+    Seconds,
+    /// Degrees.
+    #[serde(rename = "deg")]
+    Degrees,
+    /// Metres.
+    #[serde(rename = "m")]
+    Metres,
+    /// Plans made (a count).
+    #[serde(rename = "plans")]
+    Plans,
+    /// Percent.
+    #[serde(rename = "percent")]
+    Percent,
+}
+
+impl fmt::Display for Unit {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::Seconds => " s",
+            Self::Degrees => "°",
+            Self::Metres => " m",
+            Self::Plans => " plans",
+            Self::Percent => " %",
+        })
+    }
+}
+
 impl Check {
+    /// The unit of the value measured for this check (`None`: it measures none).
+    pub fn unit(&self) -> Option<Unit> {
+        match self {
+            Self::Arrived { .. } | Self::ReachSpeed { .. } => Some(Unit::Seconds),
+            Self::ArrivalHeading { .. } | Self::ApproachHeading { .. } => Some(Unit::Degrees),
+            Self::MinClearance { .. } | Self::BackwardDistance { .. } => Some(Unit::Metres),
+            Self::MaxReplans { .. } | Self::MinReplans { .. } | Self::MinGlobalPlans { .. } => {
+                Some(Unit::Plans)
+            }
+            Self::MaxOvershoot { .. } => Some(Unit::Percent),
+            Self::NoBump | Self::Recovered | Self::OnlyAllowed => None,
+        }
+    }
+
     fn numbers(&self) -> Vec<(&'static str, f64)> {
         match *self {
             Self::Arrived { within_s } => vec![("within_s", within_s)],
@@ -266,7 +319,7 @@ impl Exercise {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum CheckState {
-    /// Not decided yet.
+    /// Not decided yet (only while the run goes on).
     Open,
     /// Passed.
     Passed,
@@ -295,9 +348,10 @@ pub struct CheckStatus {
     pub check: Check,
     /// Where it stands.
     pub state: CheckState,
-    /// What was measured so far, in the check's unit (seconds, degrees, metres, plans,
-    /// percent); `None` when nothing yet.
+    /// What was measured so far, in [`CheckStatus::unit`]; `None` when nothing yet.
     pub measured: Option<f64>,
+    /// The unit of `measured` ([`Check::unit`]).
+    pub unit: Option<Unit>,
     /// For [`Check::OnlyAllowed`]: the parameters changed that may not be
     /// (`Component.Parameter`).
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -313,7 +367,10 @@ impl fmt::Display for CheckStatus {
         };
         write!(f, "{mark} {}", self.check)?;
         if let Some(m) = self.measured {
-            write!(f, " (measured {})", number(m))?;
+            match self.unit {
+                Some(u) => write!(f, " (measured {}{u})", number(m))?,
+                None => write!(f, " (measured {})", number(m))?,
+            }
         }
         if !self.changed.is_empty() {
             write!(f, " (changed: {})", self.changed.join(", "))?;

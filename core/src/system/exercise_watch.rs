@@ -119,27 +119,35 @@ impl ExerciseWatch {
         // Both in time order, merged (a sample before an event of the same time).
         let (mut e, mut s) = (events.iter().peekable(), samples.iter().peekable());
         loop {
-            let time_ns = match (e.peek(), s.peek()) {
-                (Some(ev), Some(sa)) if sa.time_ns <= ev.time_ns => {
-                    let sa = s.next().copied();
-                    sa.map(|sa| {
-                        self.on_sample(sa.time_ns, sa.v_cmd, sa.v);
-                        sa.time_ns
-                    })
-                }
-                (Some(_), _) => e.next().map(|ev| {
-                    self.on_event(ev.time_ns, &ev.kind, system);
-                    ev.time_ns
-                }),
-                (None, Some(_)) => s.next().map(|sa| {
-                    self.on_sample(sa.time_ns, sa.v_cmd, sa.v);
-                    sa.time_ns
-                }),
-                (None, None) => None,
+            let next = match (e.peek(), s.peek()) {
+                (Some(ev), Some(sa)) => ev.time_ns.min(sa.time_ns),
+                (Some(ev), None) => ev.time_ns,
+                (None, Some(sa)) => sa.time_ns,
+                (None, None) => break,
             };
-            let Some(time_ns) = time_ns else { break };
-            if self.started_ns.is_some() && self.any_failed() {
-                self.end_early(time_ns);
+            // Nothing after the time limit is the exercise's, however late it is read.
+            if let Some(start) = self.started_ns
+                && next.saturating_sub(start) > self.time_limit_ns
+            {
+                self.end(start.saturating_add(self.time_limit_ns));
+                return;
+            }
+            match (e.peek(), s.peek()) {
+                (Some(ev), Some(sa)) if sa.time_ns <= ev.time_ns => {
+                    if let Some(sa) = s.next() {
+                        self.on_sample(sa.time_ns, sa.v_cmd, sa.v);
+                    }
+                }
+                (Some(_), _) => {
+                    if let Some(ev) = e.next() {
+                        self.on_event(ev.time_ns, &ev.kind, system);
+                    }
+                }
+                (None, _) => {
+                    if let Some(sa) = s.next() {
+                        self.on_sample(sa.time_ns, sa.v_cmd, sa.v);
+                    }
+                }
             }
             if self.ended() {
                 return;
@@ -211,9 +219,12 @@ impl ExerciseWatch {
                 let after = self.since_start(time_ns);
                 for (check, p) in self.exercise.checks.iter().zip(&mut self.progress) {
                     match check {
-                        Check::Arrived { within_s } if p.state == CheckState::Open => {
+                        Check::Arrived { within_s } => {
+                            // Late (its deadline failed it): the time is still the time.
                             p.measured = Some(after);
-                            p.state = pass_if(after <= *within_s);
+                            if p.state == CheckState::Open {
+                                p.state = pass_if(after <= *within_s);
+                            }
                         }
                         Check::ArrivalHeading { within_deg } => {
                             let deg = heading_error.abs().to_degrees();
@@ -254,23 +265,25 @@ impl ExerciseWatch {
         self.max_speed = self.max_speed.max(v);
         let (command, backward, max_speed) = (self.command_ns, self.backward_m, self.max_speed);
         for (check, p) in self.exercise.checks.iter().zip(&mut self.progress) {
-            if p.state != CheckState::Open {
-                continue;
-            }
             match *check {
                 Check::ReachSpeed {
                     speed,
                     within_s,
                     band_percent,
                 } => {
+                    // The time the speed came within the band, late or not.
                     let Some(c) = command else { continue };
                     let after = (time_ns - c) as f64 * 1e-9;
-                    if v >= speed * (1.0 - band_percent / 100.0) && after <= within_s {
+                    let reached = v >= speed * (1.0 - band_percent / 100.0);
+                    if reached && p.measured.is_none() {
                         p.measured = Some(after);
-                        p.state = CheckState::Passed;
-                    } else if after > within_s {
-                        p.measured = Some(max_speed);
-                        p.state = CheckState::Failed;
+                    }
+                    if p.state == CheckState::Open {
+                        if reached && after <= within_s {
+                            p.state = CheckState::Passed;
+                        } else if after > within_s {
+                            p.state = CheckState::Failed;
+                        }
                     }
                 }
                 Check::MaxOvershoot {
@@ -279,13 +292,13 @@ impl ExerciseWatch {
                 } => {
                     let over = (max_speed / speed - 1.0) * 100.0;
                     p.measured = Some(over.max(0.0));
-                    if over > at_most_percent {
+                    if over > at_most_percent && p.state == CheckState::Open {
                         p.state = CheckState::Failed;
                     }
                 }
                 Check::BackwardDistance { at_least_m } => {
                     p.measured = Some(backward);
-                    if backward >= at_least_m {
+                    if backward >= at_least_m && p.state == CheckState::Open {
                         p.state = CheckState::Passed;
                     }
                 }
@@ -296,11 +309,9 @@ impl ExerciseWatch {
 
     fn on_clearance(&mut self, clearance: f64) {
         for (check, p) in self.exercise.checks.iter().zip(&mut self.progress) {
-            if let Check::MinClearance { at_least_m } = *check
-                && p.state == CheckState::Open
-            {
+            if let Check::MinClearance { at_least_m } = *check {
                 p.measured = clearance.is_finite().then_some(clearance);
-                if clearance < at_least_m {
+                if clearance < at_least_m && p.state == CheckState::Open {
                     p.state = CheckState::Failed;
                 }
             }
@@ -318,17 +329,18 @@ impl ExerciseWatch {
                 p.state = CheckState::Failed;
             }
         }
-        if self.any_failed() {
-            self.end_early(now);
-        }
     }
 
     fn set_count(&mut self, which: impl Fn(&Check) -> bool, count: u64) {
         for (check, p) in self.exercise.checks.iter().zip(&mut self.progress) {
-            if !which(check) || p.state != CheckState::Open {
+            if !which(check) {
                 continue;
             }
+            // The count goes on after the check is decided: one number, the plans made.
             p.measured = Some(count as f64);
+            if p.state != CheckState::Open {
+                continue;
+            }
             match *check {
                 Check::MaxReplans { at_most } if count > at_most => p.state = CheckState::Failed,
                 Check::MinReplans { at_least } | Check::MinGlobalPlans { at_least }
@@ -374,26 +386,11 @@ impl ExerciseWatch {
             CheckState::Failed
         };
         self.changed = changed;
-        if self.started_ns.is_some() && self.rule.state == CheckState::Failed {
-            self.end_early(system.time_ns());
-        }
-    }
-
-    fn any_failed(&self) -> bool {
-        self.progress.iter().any(|p| p.state == CheckState::Failed)
     }
 
     fn since_start(&self, time_ns: u64) -> f64 {
         self.started_ns
             .map_or(0.0, |s| time_ns.saturating_sub(s) as f64 * 1e-9)
-    }
-
-    /// Ends the exercise at `time_ns` because a check failed: the verdict cannot change; the
-    /// checks still open stay open (nothing decided them).
-    fn end_early(&mut self, time_ns: u64) {
-        if !self.ended() {
-            self.ended_ns = Some(time_ns);
-        }
     }
 
     /// Ends the exercise at `time_ns` (arrival, a bump, the time limit): every open check is
@@ -449,6 +446,7 @@ impl ExerciseWatch {
                 check: check.clone(),
                 state: p.state,
                 measured: p.measured.map(round4),
+                unit: check.unit(),
                 changed: Vec::new(),
             })
             .collect();
@@ -456,6 +454,7 @@ impl ExerciseWatch {
             check: Check::OnlyAllowed,
             state: self.rule.state,
             measured: None,
+            unit: None,
             changed: self.changed.clone(),
         });
         let verdict = match (self.started_ns, self.ended_ns) {

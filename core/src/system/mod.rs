@@ -7,7 +7,7 @@
 //! | part | holds | may not know |
 //! | --- | --- | --- |
 //! | [`Wiring`] (`wiring.rs`) | the execution context, the components, their connections, the service calls between ticks; each tick returns a [`Report`] of facts | the mission, the record, any user interface |
-//! | [`Mission`] (`mission.rs`) | start, goal, direction, route, epochs, arrival, halt — followed from the facts | the record; it never calls a component |
+//! | [`Mission`] (`mission.rs`) | start, goal, direction, route, epochs, halt, and the arrival — decided there alone (`rest.rs`: rest, motion, tolerances) | the record; it never calls a component |
 //! | [`Record`] (`record.rs`) | the event log, totals, trail, clearance, telemetry and trace hash — written from the reports | it never changes anything it observes |
 //! | [`System`] (`robot.rs`) | the three composed: [`System::apply`] (the one interpreter of [`Input`]), [`System::step`], [`System::run_until`] | clocks, scripts, previews, drawing buffers |
 //! | [`SystemGraph`] (`graph.rs`, from `links.rs`) | the system's description: components, ports, connections, last samples and calls | — |
@@ -85,6 +85,7 @@ mod mission;
 mod rates;
 mod record;
 mod replay;
+mod rest;
 mod robot;
 mod run_limit;
 mod runner;
@@ -101,7 +102,7 @@ pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
 pub use exercise::{
-    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Verdict,
+    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Unit, Verdict,
     parameter_values,
 };
 pub use exercise_run::{DriveInput, ExerciseRun, check_exercise};
@@ -123,9 +124,10 @@ pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CA
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use robot::System;
 pub use run_limit::MAX_REPLAY_NS;
-pub use runner::{
-    ARRIVAL_HEADING_DEG, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,
+pub use rest::{
+    ARRIVAL_HEADING_DEG, Measured, Motion, Offset, REST_SPEED, REST_TURN_RATE, Tolerances,
 };
+pub use runner::{Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario};
 #[cfg(not(target_arch = "wasm32"))]
 pub use scenario::DirResolver;
 pub use scenario::{
@@ -137,7 +139,7 @@ pub use session::{
     PlotWindow, ReplayCheck, Session, TOKEN_INFLATE_LIMIT, TUNABLE,
 };
 pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
-pub use status::{ComponentInfo, STILL, Status, SystemState};
+pub use status::{ComponentInfo, Status, SystemState};
 pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
 pub use timeline::Timeline;
 pub use wiring::{Report, Wiring};

@@ -12,7 +12,8 @@ use super::robot::System;
 use super::run_limit::beyond_replay_limit_s;
 use super::scenario::{Expectation, FileResolver, OutcomeKind, Scenario};
 use super::setup::{self, BuildOptions, Setup};
-use super::status::{STILL, SystemState};
+use super::rest::{ARRIVAL_HEADING_DEG, Measured};
+use super::status::{Status, SystemState};
 use super::timeline::{Timeline, secs_to_ns};
 use crate::errors::{ScenarioError, SystemError};
 use crate::interfaces::Pose;
@@ -22,8 +23,6 @@ use crate::motion::{DrivePhase, angle_diff};
 /// SafeMode / Clear) for the run to end there \[ns\]: long enough for LocalPathPlanning's
 /// retries every second (spec §3 Decision 0.2) to have been tried twice.
 pub const STILL_NS: u64 = 2_500_000_000;
-/// Arrival: the heading within this many degrees of the goal's.
-pub const ARRIVAL_HEADING_DEG: f64 = 10.0;
 
 /// How a run ended, and why.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -353,9 +352,10 @@ impl ScenarioRun {
     }
 }
 
-/// The outcome of the run after a tick, if it has ended: arrival, a bump, a component in
-/// Error, standing still for [`STILL_NS`] after a planning failure, a refused request or a
-/// halt, or the time limit. `cursor` counts the events read, `refused` holds the last refused
+/// The outcome of the run after a tick, if it has ended: arrival (the mission's `Arrived`,
+/// at rest within the goal's tolerances), a bump, a component in Error, resting for
+/// [`STILL_NS`] off the goal after DriveControl finished ([`Status::StoppedOffGoal`]) or
+/// after a planning failure, a refused request or a halt, or the time limit. `cursor` counts the events read, `refused` holds the last refused
 /// request, `still_since` when the robot came to stand.
 pub fn judge(
     system: &System,
@@ -409,23 +409,31 @@ pub fn judge(
     }
     let now = system.time_ns();
     let wiring = system.wiring();
-    let (v, w) = wiring.physics().physics().body_velocity();
+    let resting = Measured::of(wiring).at_rest();
     let idle = matches!(wiring.drive_control().pursuit().phase(), DrivePhase::Idle);
-    let still = v.abs() < STILL && w.abs() < STILL && idle;
     let failure = system
         .mission()
         .failure()
         .map(str::to_owned)
         .or_else(|| refused.clone());
-    if still && (failure.is_some() || system.mission().is_halted()) {
+    let off_goal = match system.status() {
+        s @ Status::StoppedOffGoal { .. } => Some(s.to_string()),
+        _ => None,
+    };
+    let stopped = idle && (failure.is_some() || system.mission().is_halted());
+    if resting && (stopped || off_goal.is_some()) {
         let since = *still_since.get_or_insert(now);
         if now - since >= STILL_NS {
-            return Some(match failure {
-                Some(reason) => Outcome {
+            return Some(match (off_goal, failure) {
+                (Some(reason), _) => Outcome {
+                    kind: OutcomeKind::StoppedOffGoal,
+                    reason,
+                },
+                (None, Some(reason)) => Outcome {
                     kind: OutcomeKind::PlanningFailed,
                     reason,
                 },
-                None => Outcome {
+                (None, None) => Outcome {
                     kind: OutcomeKind::Halted,
                     reason: "SafeMode or Clear".to_owned(),
                 },

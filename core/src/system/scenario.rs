@@ -293,8 +293,11 @@ pub struct BoxSpec {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum OutcomeKind {
-    /// DriveControl reached the goal with the goal heading.
+    /// The robot came to rest within the goal's arrival tolerances (spec §7).
     Arrived,
+    /// The robot came to rest outside the goal's arrival tolerances, DriveControl done
+    /// with the path (it overshot or stopped short), and stayed there.
+    StoppedOffGoal,
     /// A planner failed and the robot stands still without a path.
     PlanningFailed,
     /// The robot touched an obstacle.

@@ -1,7 +1,7 @@
 //! What the system is doing, from its facts: the whole system's lifecycle state
 //! ([`SystemState`]), each component as the RTC panel shows it ([`ComponentInfo`]), and the
-//! robot's status in words ([`Status`]) — "driving" only while DriveControl commands motion
-//! and the robot moves, otherwise what is true.
+//! robot's status ([`Status`]): what it does from the measured motion (`rest.rs`), why from
+//! the components' states (spec §7 Decisions 0.3).
 
 use core::fmt;
 
@@ -9,15 +9,13 @@ use serde::Serialize;
 
 use super::kind::ComponentKind;
 use super::mission::Mission;
+use super::rest::{Measured, Motion};
 use super::wiring::Wiring;
 use crate::components::{DriveStatus, MotorStatus};
 use crate::interfaces::Direction;
 use crate::motion::DrivePhase;
 use crate::present::fixed;
 use crate::rtc::LifecycleState;
-
-/// Below this speed \[m/s\] and turn rate \[rad/s\] the robot stands still.
-pub const STILL: f64 = 1e-3;
 
 /// The whole system's state, from its components' states.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
@@ -64,47 +62,78 @@ impl fmt::Display for SystemState {
     }
 }
 
-/// What the robot is doing, in words a person can check against the picture.
+/// What the robot is doing and why, as a kind and its fields (spec §7 Decisions 0.3): what
+/// it does — drives, turns, coasts, stands — from the physics' measured motion
+/// ([`Motion`]); why, from the components' states and the mission. A kind that names a
+/// cause carries the motion as its field `motion`; the kinds without one say the motion
+/// themselves (see [`Status::motion`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Status {
     /// No map is loaded.
     NoMap,
     /// A map, but no goal.
-    NoGoal,
+    NoGoal {
+        /// What the robot does meanwhile.
+        motion: Motion,
+    },
     /// A component is in Error (a bump puts the physics there): Reset recovers.
     ComponentError {
         /// The component's instance name.
         component: String,
         /// Its reason.
         reason: String,
+        /// What the robot does meanwhile.
+        motion: Motion,
     },
     /// SafeMode or Clear halted the robot until the next goal.
     Halted {
         /// `SafeMode` or `Clear`.
         by: String,
+        /// What the robot does meanwhile.
+        motion: Motion,
     },
-    /// At the goal, with the goal heading.
+    /// Arrived: at rest within the arrival tolerances of the goal (spec §7).
     Arrived,
+    /// At rest outside the arrival tolerances, DriveControl done with the path: the robot
+    /// stopped off the goal (it overshot, or stopped short) and has not arrived.
+    StoppedOffGoal {
+        /// Distance from the goal \[m\].
+        distance: f64,
+        /// Heading error \[rad\], absolute.
+        heading_error: f64,
+    },
     /// GlobalPathPlanning found no route to the goal (it tries again when the map changes).
     NoRoute {
         /// Why.
         reason: String,
+        /// What the robot does meanwhile.
+        motion: Motion,
     },
     /// A goal is held and no plan has reached DriveControl yet; after a failed local plan,
     /// LocalPathPlanning tries again every second (spec §3 Decision 0.2).
     WaitingForPlan {
         /// The failure that is being retried, if any.
         retrying: Option<String>,
+        /// What the robot does meanwhile.
+        motion: Motion,
     },
-    /// The plan is ready; the robot's components wait for activation.
+    /// The plan is ready; the physics is not Active (the robot stands), the robot's
+    /// components wait for activation.
     Ready,
-    /// The physics runs but MotorControl does not: no torque, the robot coasts.
-    Coasting,
-    /// A component the drive needs is not Active (the robot holds still or coasts).
+    /// A component the drive needs is not Active.
     Inactive {
         /// The component's instance name.
         component: String,
+        /// What the robot does meanwhile (it coasts while it still moves).
+        motion: Motion,
+    },
+    /// A data connection between two components is cut.
+    ConnectionCut {
+        /// The connection's id.
+        connection: String,
+        /// What the robot does meanwhile.
+        motion: Motion,
     },
     /// A controller stopped the robot and says why (MotorControl's or DriveControl's safe
     /// stop, DriveControl's collision check).
@@ -113,6 +142,8 @@ pub enum Status {
         component: String,
         /// Why.
         reason: String,
+        /// What the robot does meanwhile.
+        motion: Motion,
     },
     /// DriveControl commands motion and the robot moves along the path.
     Driving {
@@ -129,12 +160,20 @@ pub enum Status {
         v_cmd: f64,
         /// Commanded turn rate \[rad/s\].
         w_cmd: f64,
-        /// Actual speed \[m/s\].
+        /// Measured speed \[m/s\].
         v: f64,
-        /// Actual turn rate \[rad/s\].
+        /// Measured turn rate \[rad/s\].
         w: f64,
     },
-    /// Everything runs, nothing is commanded: the robot stands.
+    /// Everything runs, DriveControl commands nothing, and the robot still moves: it rolls
+    /// on (or is braked) to a stop.
+    Coasting {
+        /// Measured speed \[m/s\].
+        v: f64,
+        /// Measured turn rate \[rad/s\].
+        w: f64,
+    },
+    /// Everything runs and the robot is at rest.
     Standing,
 }
 
@@ -145,6 +184,7 @@ impl Status {
         if w.map().is_none() {
             return Self::NoMap;
         }
+        let motion = Motion::of(w);
         if let Some(kind) = ComponentKind::ALL
             .into_iter()
             .find(|&k| w.component_state(k) == LifecycleState::Error)
@@ -160,6 +200,7 @@ impl Status {
             return Self::ComponentError {
                 component: kind.instance_name().to_owned(),
                 reason,
+                motion,
             };
         }
         if m.is_halted() {
@@ -168,18 +209,22 @@ impl Status {
             } else {
                 "Clear"
             };
-            return Self::Halted { by: by.to_owned() };
+            return Self::Halted {
+                by: by.to_owned(),
+                motion,
+            };
         }
         if m.goal().is_none() {
-            return Self::NoGoal;
+            return Self::NoGoal { motion };
         }
-        if m.is_arrived() {
+        if m.is_arrived() && !motion.moves() {
             return Self::Arrived;
         }
         let lpp = w.local_path_planning();
         if lpp.retry_at_ns().is_some() {
             return Self::WaitingForPlan {
                 retrying: lpp.last_failure().map(|f| f.reason.clone()),
+                motion,
             };
         }
         if let Some(e) = w.global_path_planning().last_error()
@@ -187,29 +232,47 @@ impl Status {
         {
             return Self::NoRoute {
                 reason: e.to_string(),
+                motion,
             };
         }
         if !m.plan_sent() {
-            return Self::WaitingForPlan { retrying: None };
+            return Self::WaitingForPlan {
+                retrying: None,
+                motion,
+            };
         }
         let active = |k: ComponentKind| w.component_state(k) == LifecycleState::Active;
         if !active(ComponentKind::PhysicsSim) {
             return Self::Ready;
         }
-        if !active(ComponentKind::MotorControl) {
-            return Self::Coasting;
-        }
-        for k in [ComponentKind::Localization, ComponentKind::DriveControl] {
+        for k in [
+            ComponentKind::MotorControl,
+            ComponentKind::Localization,
+            ComponentKind::DriveControl,
+        ] {
             if !active(k) {
                 return Self::Inactive {
                     component: k.instance_name().to_owned(),
+                    motion,
                 };
             }
+        }
+        if let Some(link) = w
+            .links()
+            .all()
+            .iter()
+            .find(|l| l.cuttable() && l.connector.is_cut())
+        {
+            return Self::ConnectionCut {
+                connection: link.id(),
+                motion,
+            };
         }
         if let MotorStatus::SafeStop(e) = w.motor_control().status() {
             return Self::SafeStop {
                 component: ComponentKind::MotorControl.instance_name().to_owned(),
                 reason: e.to_string(),
+                motion,
             };
         }
         let drive = w.drive_control();
@@ -218,21 +281,21 @@ impl Status {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
                     reason: e.to_string(),
+                    motion,
                 };
             }
             DriveStatus::SafetyStop { ahead } => {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
                     reason: format!("obstacle {} m ahead", fixed(*ahead, 2)),
+                    motion,
                 };
             }
             _ => {}
         }
         let (v_cmd, w_cmd) = drive.pursuit().last_command();
-        let (v, om) = w.physics().physics().body_velocity();
-        let moving = v.abs() >= STILL || om.abs() >= STILL;
-        let commanded = v_cmd != 0.0 || w_cmd != 0.0;
-        if moving && ((v - v_cmd).abs() > 0.25 || (om - w_cmd).abs() > 1.0) {
+        let Measured { v, w: om } = Measured::of(w);
+        if motion.moves() && ((v - v_cmd).abs() > 0.25 || (om - w_cmd).abs() > 1.0) {
             return Self::OffCommand {
                 v_cmd,
                 w_cmd,
@@ -240,16 +303,57 @@ impl Status {
                 w: om,
             };
         }
-        if !(moving && commanded) {
-            return Self::Standing;
-        }
-        match drive.pursuit().phase() {
-            DrivePhase::TurnInPlace => Self::TurningOnTheSpot,
-            DrivePhase::FinalTurn => Self::TurningToGoalHeading,
-            _ => Self::Driving {
+        match motion {
+            Motion::Stands => match m.off_goal() {
+                Some(off) => Self::StoppedOffGoal {
+                    distance: off.distance,
+                    heading_error: off.heading_error,
+                },
+                None => Self::Standing,
+            },
+            Motion::Coasts => Self::Coasting { v, w: om },
+            Motion::Turns if drive.pursuit().phase() == DrivePhase::FinalTurn => {
+                Self::TurningToGoalHeading
+            }
+            Motion::Turns => Self::TurningOnTheSpot,
+            Motion::Drives => Self::Driving {
                 direction: lpp.direction(),
             },
         }
+    }
+
+    /// What the status says the robot does (`None`: it says nothing of it).
+    pub fn motion(&self) -> Option<Motion> {
+        match self {
+            Self::NoMap => None,
+            Self::NoGoal { motion }
+            | Self::ComponentError { motion, .. }
+            | Self::Halted { motion, .. }
+            | Self::NoRoute { motion, .. }
+            | Self::WaitingForPlan { motion, .. }
+            | Self::Inactive { motion, .. }
+            | Self::ConnectionCut { motion, .. }
+            | Self::SafeStop { motion, .. } => Some(*motion),
+            Self::Arrived | Self::StoppedOffGoal { .. } | Self::Ready | Self::Standing => {
+                Some(Motion::Stands)
+            }
+            Self::Driving { .. } => Some(Motion::Drives),
+            Self::TurningOnTheSpot | Self::TurningToGoalHeading => Some(Motion::Turns),
+            Self::Coasting { .. } => Some(Motion::Coasts),
+            // Moves, not as commanded: driven, but the words say neither drives nor turns.
+            Self::OffCommand { .. } => None,
+        }
+    }
+}
+
+impl fmt::Display for Motion {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::Stands => "stands",
+            Self::Drives => "drives",
+            Self::Turns => "turns",
+            Self::Coasts => "coasts",
+        })
     }
 }
 
@@ -257,22 +361,59 @@ impl fmt::Display for Status {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NoMap => f.write_str("no map loaded"),
-            Self::NoGoal => f.write_str("no goal: set start and goal"),
-            Self::ComponentError { component, reason } => {
-                write!(f, "{component} in Error: {reason} (Reset recovers)")
+            Self::NoGoal { motion } => {
+                write!(f, "no goal: set start and goal; the robot {motion}")
             }
-            Self::Halted { by } => write!(f, "halted by {by} until the next goal"),
-            Self::Arrived => f.write_str("arrived"),
-            Self::NoRoute { reason } => write!(f, "stopped: no route ({reason})"),
-            Self::WaitingForPlan { retrying: None } => f.write_str("waiting for a plan"),
+            Self::ComponentError {
+                component,
+                reason,
+                motion,
+            } => {
+                write!(
+                    f,
+                    "{component} in Error: {reason} (Reset recovers); the robot {motion}"
+                )
+            }
+            Self::Halted { by, motion } => {
+                write!(f, "halted by {by} until the next goal; the robot {motion}")
+            }
+            Self::Arrived => f.write_str("arrived: the robot rests at the goal"),
+            Self::StoppedOffGoal {
+                distance,
+                heading_error,
+            } => write!(
+                f,
+                "stopped off the goal: the robot rests {} m and {}° from it",
+                fixed(*distance, 3),
+                fixed(heading_error.to_degrees(), 1)
+            ),
+            Self::NoRoute { reason, motion } => {
+                write!(f, "no route ({reason}); the robot {motion}")
+            }
+            Self::WaitingForPlan {
+                retrying: None,
+                motion,
+            } => write!(f, "waiting for a plan; the robot {motion}"),
             Self::WaitingForPlan {
                 retrying: Some(reason),
-            } => write!(f, "waiting for a plan (retrying every second: {reason})"),
+                motion,
+            } => write!(
+                f,
+                "waiting for a plan (retrying every second: {reason}); the robot {motion}"
+            ),
             Self::Ready => f.write_str("plan ready: activate the robot's components"),
-            Self::Coasting => f.write_str("MotorControl inactive: coasting"),
-            Self::Inactive { component } => write!(f, "{component} inactive: the robot stands"),
-            Self::SafeStop { component, reason } => {
-                write!(f, "safety stop ({component}): {reason}")
+            Self::Inactive { component, motion } => {
+                write!(f, "{component} inactive: the robot {motion}")
+            }
+            Self::ConnectionCut { connection, motion } => {
+                write!(f, "connection {connection} cut: the robot {motion}")
+            }
+            Self::SafeStop {
+                component,
+                reason,
+                motion,
+            } => {
+                write!(f, "safety stop ({component}): {reason}; the robot {motion}")
             }
             Self::Driving {
                 direction: Direction::Forward,
@@ -289,6 +430,12 @@ impl fmt::Display for Status {
                 fixed(*w, 2),
                 fixed(*v_cmd, 2),
                 fixed(*w_cmd, 2)
+            ),
+            Self::Coasting { v, w } => write!(
+                f,
+                "coasting at {} m/s, {} rad/s: no motion commanded",
+                fixed(*v, 2),
+                fixed(*w, 2)
             ),
             Self::Standing => f.write_str("standing"),
         }
