@@ -10,9 +10,9 @@ use rtnav::present::place;
 use rtnav::rtc::LifecycleState;
 use rtnav::system::setup::{self, BuildOptions, Setup};
 use rtnav::system::{
-    CheckState, ComponentKind, DirResolver, DriveInput, EventKind, Input, Measured, Motion,
-    Offset, OutcomeKind, REST_SPEED, REST_TURN_RATE, Scenario, ScenarioRun, Status, System,
-    Tolerances, check_exercise,
+    CheckState, ComponentKind, DirResolver, DriveInput, EventKind, Input, Measured, Motion, Offset,
+    OutcomeKind, REST_SPEED, REST_TURN_RATE, Scenario, ScenarioRun, Status, System, Tolerances,
+    check_exercise,
 };
 
 fn scenario(name: &str) -> Scenario {
@@ -23,7 +23,13 @@ fn scenario(name: &str) -> Scenario {
 /// The set-up of `name` (planners Active, the plan made, the robot waiting).
 fn set_up(name: &str) -> System {
     let s = scenario(name);
-    setup::build(&s, &DirResolver::new(".."), &Setup::of(&s), BuildOptions::default()).unwrap()
+    setup::build(
+        &s,
+        &DirResolver::new(".."),
+        &Setup::of(&s),
+        BuildOptions::default(),
+    )
+    .unwrap()
 }
 
 fn apply(s: &mut System, input: Input) {
@@ -63,7 +69,11 @@ fn arrival_is_at_rest_and_a_new_goal_gives_no_arrived_until_the_robot_rests_at_i
     assert_eq!(s.status(), Status::Arrived);
     let first = arrivals_since(&s, 0);
     assert_eq!(first.len(), 1, "{first:?}");
-    assert_eq!(first[0].1, s.robot_pose(), "the Arrived pose is the pose at rest");
+    assert_eq!(
+        first[0].1,
+        s.robot_pose(),
+        "the Arrived pose is the pose at rest"
+    );
     // Standing there a while logs nothing more.
     let seen = s.record().event_count();
     s.run_for(1.0).unwrap();
@@ -127,7 +137,10 @@ fn arrival_a_robot_that_overshoots_and_rests_off_the_goal_has_not_arrived() {
         other => panic!("the status says {other}"),
     }
     assert!(Measured::of(s.wiring()).at_rest());
-    assert!(outcome.reason.starts_with("stopped off the goal"), "{outcome:?}");
+    assert!(
+        outcome.reason.starts_with("stopped off the goal"),
+        "{outcome:?}"
+    );
 }
 
 #[test]
@@ -256,12 +269,18 @@ fn exercise_checks_every_check_is_decided_when_the_run_ends() {
     let runs = exercise_runs();
     assert!(runs.len() >= 16, "{} runs", runs.len());
     for (name, conf, inputs) in runs {
-        let status =
-            check_exercise(&scenario(&name), &RepoResolver::new(".."), conf.as_deref(), &inputs)
-                .unwrap();
-        let what = format!("{name} ({}):\n{status}", conf.as_deref().map_or("as given", |c| {
-            c.lines().next().unwrap_or("")
-        }));
+        let status = check_exercise(
+            &scenario(&name),
+            &RepoResolver::new(".."),
+            conf.as_deref(),
+            &inputs,
+        )
+        .unwrap();
+        let what = format!(
+            "{name} ({}):\n{status}",
+            conf.as_deref()
+                .map_or("as given", |c| { c.lines().next().unwrap_or("") })
+        );
         assert!(status.ended_after.is_some(), "{what}");
         for c in &status.checks {
             assert_ne!(c.state, CheckState::Open, "undecided: {what}");
@@ -320,7 +339,9 @@ fn input_of(step: &Step) -> Option<Input> {
             direction: Direction::Forward,
         },
         Step::Edit(x, y, v) => Input::MapUpdate {
-            cells: (0..4).flat_map(|d| [(x + d, y, v), (x, y + d, v)]).collect(),
+            cells: (0..4)
+                .flat_map(|d| [(x + d, y, v), (x, y + d, v)])
+                .collect(),
         },
         Step::Lifecycle(r, k) => {
             let component = ComponentKind::ALL[k];

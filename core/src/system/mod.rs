@@ -122,11 +122,11 @@ pub use mission::Mission;
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
-pub use robot::System;
-pub use run_limit::MAX_REPLAY_NS;
 pub use rest::{
     ARRIVAL_HEADING_DEG, Measured, Motion, Offset, REST_SPEED, REST_TURN_RATE, Tolerances,
 };
+pub use robot::System;
+pub use run_limit::MAX_REPLAY_NS;
 pub use runner::{Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario};
 #[cfg(not(target_arch = "wasm32"))]
 pub use scenario::DirResolver;
