@@ -167,7 +167,7 @@ impl Journal {
             tick,
         });
         if d.failing.contains(&(component.to_owned(), callback)) {
-            return Err(ComponentError::new(format!(
+            return Err(ComponentError::words(format!(
                 "{component}: {} told to fail",
                 callback.name()
             )));

@@ -189,7 +189,12 @@ impl World {
             ticks: self.ec.tick_count(),
             calls: self.journal.len(),
             events: self.ec.events().to_vec(),
-            last_error: self.ec.last_error(ID).ok().flatten().map(str::to_owned),
+            last_error: self
+                .ec
+                .last_error(ID)
+                .ok()
+                .flatten()
+                .map(ToString::to_string),
             fault_pending: self.ec.fault_pending(ID).ok(),
             rate: self.ec.rate(ID).ok(),
         }
@@ -214,7 +219,7 @@ fn check(setup: &[Op], request: Op, expect: Result<Outcome, LifecycleError>) {
                 state: w.ec.state(ID).unwrap(),
                 context: w.ec.context_state(),
                 calls: w.journal.counts_text_since(P, before.calls),
-                last_error: w.ec.last_error(ID).unwrap().map(str::to_owned),
+                last_error: w.ec.last_error(ID).unwrap().map(ToString::to_string),
             };
             assert_eq!(outcome, want, "{row}");
         }
@@ -473,17 +478,32 @@ fn events_record_every_state_change_and_failure() {
     w.run(Activate).unwrap();
     w.run(Ticks(1)).unwrap();
     assert_eq!(w.ec.fault_pending(ID), Ok(false));
-    let ev = |time_ms: u64, from, to, callback, reason: Option<&str>| LifecycleEvent {
-        time_ns: time_ms * 1_000_000,
-        id: ID,
-        component: P.to_owned(),
-        from,
-        to,
-        callback,
-        reason: reason.map(str::to_owned),
+    // The events with their reasons in words.
+    let ev = |time_ms: u64, from, to, callback, reason: Option<&str>| {
+        (
+            LifecycleEvent {
+                time_ns: time_ms * 1_000_000,
+                id: ID,
+                component: P.to_owned(),
+                from,
+                to,
+                callback,
+                reason: None,
+            },
+            reason.map(str::to_owned),
+        )
+    };
+    let said = |events: Vec<LifecycleEvent>| -> Vec<(LifecycleEvent, Option<String>)> {
+        events
+            .into_iter()
+            .map(|mut e| {
+                let reason = e.reason.take().map(|r| r.to_string());
+                (e, reason)
+            })
+            .collect()
     };
     assert_eq!(
-        w.ec.drain_events(),
+        said(w.ec.drain_events()),
         vec![
             ev(0, Created, Inactive, "on_initialize", None),
             ev(0, Inactive, Active, "on_activated", None),
@@ -495,7 +515,10 @@ fn events_record_every_state_change_and_failure() {
         ]
     );
     assert_eq!(w.ec.drain_events(), vec![]);
-    assert_eq!(w.ec.last_error(ID), Ok(Some(INJECTED)));
+    assert_eq!(
+        w.ec.last_error(ID).map(|r| r.map(ToString::to_string)),
+        Ok(Some(INJECTED.to_owned()))
+    );
     assert_eq!(w.ec.time_ns(), 4_000_000);
 }
 

@@ -24,7 +24,7 @@ import { createTimeline } from './js/panels/timeline.js';
 import { createCompare } from './js/compare.js';
 import { createExercisePanel } from './js/panels/exercise.js';
 import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
-import { errorText } from './js/words.js';
+import { errorText } from './js/say.js';
 import { keepRun, takeRun, restoreRun } from './js/carry.js';
 
 const $ = (id) => document.getElementById(id);
@@ -67,7 +67,7 @@ async function boot() {
       try {
         return { ok: true, value: guard.call(fn) };
       } catch (e) {
-        // The refusal in the page's language, from the error's detail (`words.js`).
+        // The refusal in the page's language, from the error's detail (`say.js`).
         return { ok: false, error: errorText(e), message: e?.message ?? String(e) };
       } finally {
         app.requestMs += performance.now() - t0;

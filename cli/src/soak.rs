@@ -447,7 +447,7 @@ impl Soak {
                     component,
                     callback,
                     reason,
-                } if !reason.starts_with("bump") => {
+                } if !matches!(reason, rtnav::Reason::Bump(_)) => {
                     self.report.component_errors += 1;
                     if self.report.error_texts.len() < 10 {
                         self.report.error_texts.push(format!(

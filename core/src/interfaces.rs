@@ -111,12 +111,12 @@ pub struct GridPath {
 }
 
 /// The planning-failure notice of 000 §5.2.4.13 ("経路作成に失敗したことを該当するRTCへ伝える").
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PlanningFailure {
     /// When planning failed.
     pub tm: Time,
     /// Which planner: `GlobalPathPlanning` or `LocalPathPlanning`.
     pub planner: String,
-    /// Why, for the GUI.
-    pub reason: String,
+    /// Why, for the GUI (the planner's error).
+    pub reason: crate::Reason,
 }

@@ -22,9 +22,11 @@ pub mod local;
 pub mod map;
 pub mod motion;
 pub mod present;
+pub mod reason;
 #[cfg(feature = "render")]
 pub mod render;
 pub mod rtc;
 pub mod system;
 
 pub use errors::{Error, ErrorDetail, Result};
+pub use reason::Reason;

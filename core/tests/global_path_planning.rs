@@ -226,7 +226,7 @@ impl Rig {
 
     fn failure_reason(&self) -> String {
         assert!(self.failure.is_new());
-        self.failure.read().unwrap().reason
+        self.failure.read().unwrap().reason.to_string()
     }
 }
 

@@ -395,7 +395,7 @@ fn unreachable() {
         }
         _ => None,
     });
-    assert!(reason.is_some_and(|r| r.contains("no path")));
+    assert!(reason.is_some_and(|r| r.to_string().contains("no path")));
     assert!(s.stats().path_length < 0.01, "the robot stays where it is");
     // "Open a door: with the Erase tool and a 1 m brush, erase the storeroom's west wall
     // (x ≈ 14 m) from y ≈ 8 m to 10 m — the inspector shows each cell's position in metres —

@@ -429,7 +429,7 @@ fn s5_2_4_3_a_global_path_that_misses_the_goal_cell_is_a_failure() {
     c.on_execute(&tick(0)).unwrap();
     assert!(c.drive_cons.last().unwrap().points.is_empty());
     assert_eq!(
-        c.last_failure().unwrap().reason,
+        c.last_failure().unwrap().reason.to_string(),
         "the held path does not reach the goal cell (35, 10)"
     );
     // Spec §3 Decision 0.2: the course was planned at once, and failed.
@@ -781,7 +781,7 @@ fn s5_2_4_13_a_walled_off_goal_gives_an_empty_path_and_a_notice() {
     let notice = c.invent_gui_failure.last().unwrap();
     assert_eq!(notice.planner, "LocalPathPlanning");
     assert_eq!(
-        notice.reason,
+        notice.reason.to_string(),
         "no route: the potential field from the local target (35, 10) does not reach the current cell (4, 10)"
     );
     assert_eq!(notice.tm.nsec, 100_000_000);
@@ -834,7 +834,7 @@ fn s5_2_4_13_a_current_position_within_dmin_escapes_the_zone_and_one_on_an_obsta
     assert!(!c.flags().current_position);
     assert_eq!(c.plan_count(), 3);
     assert!(c.drive_cons.last().unwrap().points.is_empty());
-    let reason = &c.last_failure().unwrap().reason;
+    let reason = c.last_failure().unwrap().reason.to_string();
     assert!(
         reason.starts_with("current position (2.625, 3.125) in cell (10, 12)"),
         "{reason}"

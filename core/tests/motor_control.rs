@@ -383,7 +383,7 @@ fn equal_wheel_ids_fail_the_activation_with_a_reason() {
     m.config_mut().set("rightWheelID", 0.0).unwrap();
     let (mut ec, id) = in_context(m);
     assert_eq!(ec.activate(id).unwrap(), LifecycleState::Error);
-    let reason = ec.last_error(id).unwrap().unwrap();
+    let reason = ec.last_error(id).unwrap().unwrap().to_string();
     assert!(
         reason.contains("leftWheelID and rightWheelID are both 0"),
         "{reason}"

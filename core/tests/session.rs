@@ -217,10 +217,10 @@ fn a_nan_pose_puts_localization_in_error_and_reset_recovers() {
     })
     .unwrap();
     s.step_ticks(1);
-    let info = ComponentInfo::of(s.system().wiring(), ComponentKind::Localization);
+    let info = ComponentInfo::of(s.system(), ComponentKind::Localization);
     assert_eq!(info.state, LifecycleState::Error);
     assert_eq!(
-        info.last_error.as_deref(),
+        info.last_error.map(|r| r.to_string()).as_deref(),
         Some("InSimulatedPosition: data[0] = NaN is not finite")
     );
     let unknown = s

@@ -80,7 +80,7 @@ fn arrived(s: &System) -> bool {
 }
 
 fn info(s: &System, kind: ComponentKind) -> ComponentInfo {
-    ComponentInfo::of(s.wiring(), kind)
+    ComponentInfo::of(s, kind)
 }
 
 /// The newest `MapUpdated` event's `(cells listed, cells changed)`.
@@ -296,7 +296,13 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     );
     let reason = info(&s, ComponentKind::PhysicsSim).last_error.unwrap();
     assert!(
-        reason.starts_with("bump: rh0 bumped into obstacle cell"),
+        matches!(&reason, rtnav::Reason::Bump(r) if r.who == "rh0"),
+        "{reason:?}"
+    );
+    assert!(
+        reason
+            .to_string()
+            .starts_with("bump: rh0 bumped into obstacle cell"),
         "{reason}"
     );
     assert!(s.record().events().iter().any(|e| matches!(
@@ -317,7 +323,7 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     // Reset: every component Inactive, the reason gone.
     s.apply(&Input::ResetAll).unwrap();
     assert_eq!(s.state(), SystemState::Inactive);
-    for info in ComponentInfo::all(s.wiring()) {
+    for info in ComponentInfo::all(&s) {
         assert_eq!(
             info.state,
             LifecycleState::Inactive,
@@ -476,10 +482,17 @@ fn an_injected_fault_puts_one_component_in_error_with_its_reason() {
     assert_eq!(s.state(), SystemState::Error);
     let drive = info(&s, ComponentKind::DriveControl);
     assert_eq!(drive.state, LifecycleState::Error);
-    assert_eq!(drive.last_error.as_deref(), Some("injected fault: test"));
+    let fault = rtnav::Reason::InjectedFault("test".to_owned());
+    assert_eq!(drive.last_error.as_ref(), Some(&fault));
     // Its status says so: it does not drive while it is in Error.
     assert_eq!(
         drive.status,
+        rtnav::system::ComponentActivity::InError {
+            reason: Some(fault)
+        }
+    );
+    assert_eq!(
+        drive.status.to_string(),
         "in Error, not executing: injected fault: test"
     );
     assert!(s.record().events().iter().any(|e| matches!(
@@ -506,7 +519,7 @@ fn an_injected_fault_puts_one_component_in_error_with_its_reason() {
 #[test]
 fn components_have_their_rates_states_and_live_configuration() {
     let mut s = system(GOAL);
-    let rates: Vec<_> = ComponentInfo::all(s.wiring())
+    let rates: Vec<_> = ComponentInfo::all(&s)
         .iter()
         .map(|c| (c.instance_name.clone(), c.rate))
         .collect();

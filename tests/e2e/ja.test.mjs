@@ -127,21 +127,22 @@ async function waitLogged(page, kind, timeout = 60_000) {
 const logLines = (page) => page.$$eval('#events li', (items) => items.map((i) => [i.dataset.kind, i.querySelector('.text').textContent]));
 
 /**
- * The core's events in the log said again through the English catalogue (the reasons as
- * given): [kind, the core's text, the catalogue's], for those that differ. The catalogue's
- * English must be the core's, so its Japanese carries the same numbers written the same way.
+ * The core's events in the log said again through the English catalogue, from their kinds
+ * and fields: [kind, the core's text, the catalogue's], for those that differ. The
+ * catalogue's English must be the core's, so its Japanese carries the same numbers written
+ * the same way.
  */
 const englishMismatches = (page) => page.evaluate(async () => {
-  const { eventWords } = await import('./js/words.js');
+  const { sayer } = await import('./js/say.js');
   const { fill, englishWords } = await import('./js/i18n.js');
-  const say = (key, vars) => fill(englishWords()[key] ?? key, vars);
+  const english = sayer((key, vars) => fill(englishWords()[key] ?? key, vars), (key) => key in englishWords());
   const out = [];
   let compared = 0;
   for (const li of document.querySelectorAll('#events li')) {
     const e = li.rtnavEvent;
     if (!e || e.kind === 'Page') continue;
     compared++;
-    const again = eventWords(e, say, (r) => r);
+    const again = english.eventText(e);
     if (again !== e.text) out.push([e.kind, e.text, again]);
   }
   // Nothing compared is a broken check, not a pass.

@@ -48,13 +48,13 @@ test('in English the status is the core\'s text, and the catalogue\'s status wor
   const { page, problems } = await openPage(browser.context, '?lang=en');
   // Every status the page shows during a run, with what the catalogue makes of its fields.
   await page.evaluate(async () => {
-    const { statusText } = await import('./js/words.js');
+    const { sayer } = await import('./js/say.js');
     const { fill, englishWords } = await import('./js/i18n.js');
-    const say = (key, vars) => fill(englishWords()[key] ?? key, vars);
+    const english = sayer((key, vars) => fill(englishWords()[key] ?? key, vars), (key) => key in englishWords());
     window.__statuses = new Map();
     const look = () => {
       const v = JSON.parse(window.rtnav.demo.telemetry_json());
-      window.__statuses.set(v.status, statusText(v.status_kind, v.status_fields, say, (r) => r));
+      window.__statuses.set(v.status, english.statusText(v.status_kind, v.status_fields));
       requestAnimationFrame(look);
     };
     look();

@@ -312,7 +312,7 @@ impl Inner {
         ComponentKind::ALL
             .into_iter()
             .map(|kind| {
-                let info = ComponentInfo::of(wiring, kind);
+                let info = ComponentInfo::of(self.system(), kind);
                 ComponentView {
                     name: kind.name(),
                     colour: info.state.editor_colour(),

@@ -167,7 +167,10 @@ pub(crate) fn js(e: Refusal) -> JsValue {
 mod tests {
     use std::collections::BTreeMap;
 
-    use rtnav::system::EventKind;
+    use rtnav::system::{
+        ComponentActivity, EventKind, Held, InputSummary, ParameterWarning, RequestSource,
+        ZeroOutput,
+    };
     use strum::VariantNames;
 
     use super::*;
@@ -179,13 +182,27 @@ mod tests {
         serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
     }
 
-    /// The keys the page says the core's events and errors with, from the code's own lists:
+    /// The keys the page says the core's facts with, from the code's own lists:
     /// `event.<Kind>` for every [`EventKind`], `error.<Area>.<Kind>` for every
-    /// [`rtnav::Error::KINDS`] and every [`PageError`].
+    /// [`rtnav::Error::KINDS`] and every [`PageError`], `rtcstatus.<kind>` for every
+    /// [`ComponentActivity`], `held.<flag>` for every [`Held`], `reason.<kind>` for every
+    /// [`rtnav::Reason`], `warning.<kind>` for every [`ParameterWarning`], `input.<Kind>` for
+    /// every [`InputSummary`], `source.<Source>` for every [`RequestSource`] and
+    /// `rtcstatus.zero.<output>` for every [`ZeroOutput`].
     fn wanted() -> Vec<String> {
-        let mut keys: Vec<String> = EventKind::VARIANTS
+        let lists: [(&str, &[&str]); 8] = [
+            ("event", EventKind::VARIANTS),
+            ("rtcstatus", ComponentActivity::KINDS),
+            ("held", Held::VARIANTS),
+            ("reason", rtnav::Reason::KINDS),
+            ("warning", ParameterWarning::KINDS),
+            ("input", InputSummary::VARIANTS),
+            ("source", RequestSource::VARIANTS),
+            ("rtcstatus.zero", ZeroOutput::VARIANTS),
+        ];
+        let mut keys: Vec<String> = lists
             .iter()
-            .map(|k| format!("event.{k}"))
+            .flat_map(|(prefix, kinds)| kinds.iter().map(move |k| format!("{prefix}.{k}")))
             .collect();
         for (area, kinds) in rtnav::Error::KINDS {
             keys.extend(kinds.iter().map(|k| format!("error.{area}.{k}")));
@@ -210,6 +227,18 @@ mod tests {
         assert!(wanted().len() > 100, "{}", wanted().len());
         assert!(wanted().contains(&"event.Bump".to_owned()));
         assert!(wanted().contains(&"error.Lifecycle.InvalidTransition".to_owned()));
+        for key in [
+            "rtcstatus.local_planning",
+            "rtcstatus.in_error",
+            "reason.bump",
+            "reason.map_update_refused",
+            "warning.clearance",
+            "input.MapUpdate",
+            "held.start_and_goal",
+            "source.Replay",
+        ] {
+            assert!(wanted().contains(&key.to_owned()), "{key}");
+        }
         for lang in ["en", "ja"] {
             assert_eq!(
                 lacking(&catalogue(lang)),
@@ -220,7 +249,11 @@ mod tests {
         // The check can fail: a catalogue without one kind's words is found out.
         let mut less = catalogue("ja");
         less.remove("error.Config.OutOfRange");
-        assert_eq!(lacking(&less), ["error.Config.OutOfRange"]);
+        less.remove("rtcstatus.following_path");
+        assert_eq!(
+            lacking(&less),
+            ["rtcstatus.following_path", "error.Config.OutOfRange"]
+        );
     }
 
     /// A refusal of the core's carries its detail; the page's own carry area `Page`.

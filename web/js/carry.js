@@ -8,7 +8,7 @@
 // is the same bit for bit. A map loaded from a file has no replay: the page asks first.
 import { Demo } from '../pkg/rtnav_wasm.js';
 import { t } from './i18n.js';
-import { errorText } from './words.js';
+import { errorText } from './say.js';
 
 const KEY = 'rtnav.carry';
 /** A carry older than this [ms] is not for this load (a reload long after, another tab). */

@@ -30,11 +30,11 @@ export function createCompare(formRoot, viewRoot, app) {
     'energy Σ|τ·ω|·Δt': t('compare.row.energy'),
     'trace hash': t('compare.row.trace_hash'),
   };
-  const cell = (measure, text) => {
+  /** A row's value for one run: the core's text, or said from the run's summary (`run`). */
+  const cell = (measure, text, run) => {
     if (measure === 'outcome' && has(`compare.outcome.${text}`)) return t(`compare.outcome.${text}`);
     if (measure === 'configuration' && text === 'as written') return t('compare.as_written');
-    const replans = measure === 'replans' && /^(\d+) local, (\d+) global$/.exec(text);
-    if (replans) return t('compare.replans', { local: replans[1], global: replans[2] });
+    if (measure === 'replans' && run) return t('compare.replans', { local: run.replans, global: run.global_plans });
     return text;
   };
 
@@ -113,7 +113,7 @@ export function createCompare(formRoot, viewRoot, app) {
     table.replaceChildren(
       el('thead', {}, el('tr', {}, el('th', {}, ''), el('th', {}, 'A'), el('th', {}, t('compare.col.b')))),
       el('tbody', {}, ...data.rows.map(([m, a, b]) => el('tr', { dataset: { measure: m } },
-        el('th', { scope: 'row' }, ROWS[m] ?? m), el('td', {}, cell(m, a)), el('td', {}, cell(m, b))))),
+        el('th', { scope: 'row' }, ROWS[m] ?? m), el('td', {}, cell(m, a, data.a)), el('td', {}, cell(m, b, data.b))))),
     );
     drawPlot(JSON.parse(view.plots_json()));
     viewRoot.hidden = false;

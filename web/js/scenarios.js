@@ -9,7 +9,7 @@
 import { Demo, Files } from '../pkg/rtnav_wasm.js';
 import { el } from './dom.js';
 import { t, has } from './i18n.js';
-import { errorText } from './words.js';
+import { errorText } from './say.js';
 
 const INDEX_URL = 'fixtures/index.json';
 /** MovingAI maps have no cell size: they are read at this many metres per cell. */

@@ -38,7 +38,7 @@ use crate::rng::Rng;
 pub fn fingerprint(s: &System) -> String {
     let mut out = String::new();
     let _ = write!(out, "t={} state={:?}", s.time_ns(), s.state());
-    for info in ComponentInfo::all(s.wiring()) {
+    for info in ComponentInfo::all(s) {
         let _ = write!(out, "\n{info:?}");
     }
     let _ = write!(

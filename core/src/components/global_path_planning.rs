@@ -369,7 +369,7 @@ impl Component for GlobalPathPlanning {
                 self.planning_failure.write(PlanningFailure {
                     tm: tick.tm(),
                     planner: PLANNER.to_owned(),
-                    reason: e.to_string(),
+                    reason: crate::Reason::Error(e.clone().into()),
                 });
                 self.last_plan = None;
                 self.last_length = None;

@@ -26,7 +26,7 @@ use crate::rtc::{
 };
 
 /// Where the published pose comes from (`LocalizationMode`).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
 pub enum LocalizationMode {
     /// 0: the simulated pose (ground truth).
     #[default]

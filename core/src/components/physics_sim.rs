@@ -317,7 +317,7 @@ impl Component for PhysicsSim {
                     if self.fail_on_bump {
                         self.applied = [0.0; 2];
                         self.publish();
-                        return Err(ComponentError::new(format!("bump: {report}")));
+                        return Err(ComponentError::new(crate::Reason::Bump(report)));
                     }
                 }
                 Ok(None) => {}

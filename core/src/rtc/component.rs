@@ -6,27 +6,33 @@ use core::fmt;
 use super::config::ConfigAccess;
 use super::idl::Time;
 use super::sample::PortView;
+use crate::reason::Reason;
 
 /// Why a callback failed; the GUI shows `reason` (spec §1: "A callback fails by returning an
-/// error value (with a reason that the GUI shows)").
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// error value (with a reason that the GUI shows)"), as data ([`Reason`]).
+#[derive(Debug, Clone, PartialEq)]
 pub struct ComponentError {
-    /// Human-readable reason.
-    pub reason: String,
+    /// Why (boxed: a callback's `Result` stays small).
+    pub reason: Box<Reason>,
 }
 
 impl ComponentError {
-    /// A failure with this reason.
-    pub fn new(reason: impl Into<String>) -> Self {
+    /// A failure for this reason.
+    pub fn new(reason: Reason) -> Self {
         Self {
-            reason: reason.into(),
+            reason: Box::new(reason),
         }
+    }
+
+    /// A failure a component the core does not know gives in its own words.
+    pub fn words(words: impl Into<String>) -> Self {
+        Self::new(Reason::Words(words.into()))
     }
 }
 
 impl fmt::Display for ComponentError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.reason)
+        fmt::Display::fmt(&self.reason, f)
     }
 }
 
@@ -34,7 +40,7 @@ impl std::error::Error for ComponentError {}
 
 impl From<crate::Error> for ComponentError {
     fn from(e: crate::Error) -> Self {
-        Self::new(e.to_string())
+        Self::new(Reason::Error(e))
     }
 }
 

@@ -51,6 +51,7 @@ use super::component::{Component, ComponentError, ReturnCode, Tick};
 use super::rate::period_ticks;
 use super::state::{ContextState, LifecycleState, Request};
 use crate::errors::LifecycleError;
+use crate::reason::Reason;
 
 const NANOS_PER_SEC: f64 = 1e9;
 
@@ -58,7 +59,7 @@ const NANOS_PER_SEC: f64 = 1e9;
 pub type ComponentId = usize;
 
 /// What happened to a component: a state change or a failed callback (for event logs).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct LifecycleEvent {
     /// Simulated time in nanoseconds.
     pub time_ns: u64,
@@ -73,7 +74,7 @@ pub struct LifecycleEvent {
     /// The callback whose run caused this event.
     pub callback: &'static str,
     /// The callback's failure reason, if it failed.
-    pub reason: Option<String>,
+    pub reason: Option<Reason>,
 }
 
 /// Data written into a component's input port from outside just before its next
@@ -86,7 +87,7 @@ struct Slot {
     period_ticks: u64,
     fault: Option<String>,
     injections: Vec<InputInjection>,
-    last_error: Option<String>,
+    last_error: Option<Reason>,
 }
 
 /// A periodic execution context in simulated time.
@@ -226,8 +227,8 @@ impl ExecutionContext {
 
     /// The reason of the component's most recent callback failure, kept until a reset (or a
     /// retried `on_initialize`) succeeds.
-    pub fn last_error(&self, id: ComponentId) -> Result<Option<&str>, LifecycleError> {
-        Ok(self.slot(id)?.last_error.as_deref())
+    pub fn last_error(&self, id: ComponentId) -> Result<Option<&Reason>, LifecycleError> {
+        Ok(self.slot(id)?.last_error.as_ref())
     }
 
     /// The component's period in base ticks (it runs at the ticks whose index it divides).
@@ -299,7 +300,7 @@ impl ExecutionContext {
         id: ComponentId,
         from: LifecycleState,
         callback: &'static str,
-        reason: Option<String>,
+        reason: Option<Reason>,
     ) {
         let to = self.slots[id].state;
         if let Some(r) = &reason {
@@ -350,9 +351,9 @@ impl ExecutionContext {
         let tick = self.tick_for(id);
         let aborting = self.slots[id].component.on_aborting(&tick);
         self.slots[id].state = LifecycleState::Error;
-        self.record(id, from, failed, Some(e.reason));
+        self.record(id, from, failed, Some(*e.reason));
         if let Err(e2) = aborting {
-            self.record(id, LifecycleState::Error, "on_aborting", Some(e2.reason));
+            self.record(id, LifecycleState::Error, "on_aborting", Some(*e2.reason));
         }
     }
 
@@ -361,7 +362,12 @@ impl ExecutionContext {
     pub fn initialize(&mut self, id: ComponentId) -> Result<LifecycleState, LifecycleError> {
         self.check(id, Request::Initialize, &[LifecycleState::Created], false)?;
         if let Err(e) = self.slots[id].component.on_initialize() {
-            self.record(id, LifecycleState::Created, "on_initialize", Some(e.reason));
+            self.record(
+                id,
+                LifecycleState::Created,
+                "on_initialize",
+                Some(*e.reason),
+            );
             return Ok(LifecycleState::Created);
         }
         self.slots[id].state = LifecycleState::Inactive;
@@ -413,7 +419,7 @@ impl ExecutionContext {
             id,
             LifecycleState::Active,
             "on_deactivated",
-            r.err().map(|e| e.reason),
+            r.err().map(|e| *e.reason),
         );
         Ok(LifecycleState::Inactive)
     }
@@ -430,7 +436,7 @@ impl ExecutionContext {
                 s.last_error = None;
                 self.record(id, LifecycleState::Error, "on_reset", None);
             }
-            Err(e) => self.record(id, LifecycleState::Error, "on_reset", Some(e.reason)),
+            Err(e) => self.record(id, LifecycleState::Error, "on_reset", Some(*e.reason)),
         }
         Ok(self.slots[id].state)
     }
@@ -449,7 +455,7 @@ impl ExecutionContext {
         let from = self.slots[id].state;
         let r = self.slots[id].component.on_finalize();
         self.slots[id].state = Finalized;
-        self.record(id, from, "on_finalize", r.err().map(|e| e.reason));
+        self.record(id, from, "on_finalize", r.err().map(|e| *e.reason));
         Ok(Finalized)
     }
 
@@ -471,7 +477,7 @@ impl ExecutionContext {
             let tick = self.tick_for(id);
             if let Err(e) = self.slots[id].component.on_rate_changed(&tick) {
                 let st = self.slots[id].state;
-                self.record(id, st, "on_rate_changed", Some(e.reason));
+                self.record(id, st, "on_rate_changed", Some(*e.reason));
             }
         }
         Ok(())
@@ -542,7 +548,7 @@ impl ExecutionContext {
         };
         if let Err(e) = r {
             let st = self.slots[id].state;
-            self.record(id, st, name, Some(e.reason));
+            self.record(id, st, name, Some(*e.reason));
         }
     }
 
@@ -574,7 +580,7 @@ impl ExecutionContext {
                     write(self.slots[id].component.as_mut());
                 }
                 let r: ReturnCode = match self.slots[id].fault.take() {
-                    Some(reason) => Err(ComponentError::new(format!("injected fault: {reason}"))),
+                    Some(words) => Err(ComponentError::new(Reason::InjectedFault(words))),
                     None => self.slots[id].component.on_execute(&tick),
                 };
                 match r {
@@ -588,7 +594,7 @@ impl ExecutionContext {
             }
             LifecycleState::Error => {
                 if let Err(e) = self.slots[id].component.on_error(&tick) {
-                    self.record(id, LifecycleState::Error, "on_error", Some(e.reason));
+                    self.record(id, LifecycleState::Error, "on_error", Some(*e.reason));
                 }
             }
             _ => {}

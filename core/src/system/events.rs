@@ -5,9 +5,11 @@ use core::fmt;
 
 use serde::Serialize;
 
+use super::input::{InputSummary, RequestSource};
 use crate::interfaces::{Direction, Pose};
 use crate::motion::BumpReport;
 use crate::present::{fixed, number};
+use crate::reason::Reason;
 use crate::rtc::LifecycleState;
 
 /// One thing that happened, at simulated time `time_ns`.
@@ -79,7 +81,7 @@ pub enum EventKind {
         /// `GlobalPathPlanning` or `LocalPathPlanning`.
         planner: String,
         /// Why.
-        reason: String,
+        reason: Reason,
     },
     /// The robot touched an obstacle (spec §5): it stops and the physics goes to Error.
     Bump {
@@ -105,7 +107,7 @@ pub enum EventKind {
         /// The callback that failed.
         callback: String,
         /// Its reason.
-        reason: String,
+        reason: Reason,
     },
     /// A component's lifecycle state changed.
     StateChanged {
@@ -172,10 +174,12 @@ pub enum EventKind {
     /// A request the system made on its own was refused (a scenario's timed goal, a replan
     /// after a parameter change); the previous state stays.
     RequestRefused {
+        /// Who asked.
+        source: RequestSource,
         /// What was asked.
-        request: String,
+        request: InputSummary,
         /// Why it was refused.
-        reason: String,
+        reason: Reason,
     },
     /// A sample was written into a component's input port from outside (rtshell's
     /// `rtinject`; the page's "Sensor glitch").
@@ -347,8 +351,12 @@ impl fmt::Display for EventKind {
                 number(grid_size / 2.0),
                 number(*body_radius)
             ),
-            EventKind::RequestRefused { request, reason } => {
-                write!(f, "{request} was refused: {reason}")
+            EventKind::RequestRefused {
+                source,
+                request,
+                reason,
+            } => {
+                write!(f, "{source}: {request} was refused: {reason}")
             }
             EventKind::InputInjected { component, port } => {
                 write!(f, "a sample was injected into {component}.{port}")

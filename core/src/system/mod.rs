@@ -67,6 +67,7 @@
 //! goes to Error (the robot stands still), MotorControl gets `Stop`; `Input::ResetAll`
 //! brings every component back to Inactive.
 
+mod activity;
 mod compare;
 mod conf_bundle;
 mod error;
@@ -82,6 +83,7 @@ mod json_text;
 mod kind;
 mod links;
 mod mission;
+mod parameter_warning;
 mod rates;
 mod record;
 mod replay;
@@ -97,6 +99,7 @@ mod telemetry;
 mod timeline;
 mod wiring;
 
+pub use activity::{ComponentActivity, Held, ZeroOutput};
 pub use compare::{ComparePlots, Comparison, RunSummary, compare, setup_with};
 pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
@@ -114,11 +117,12 @@ pub use history::{
     CHECKPOINT_CELLS, CHECKPOINT_NS, CHECKPOINT_SAMPLES, MAX_CHECKPOINTS, Mark, MarkKind,
     TimelineView,
 };
-pub use input::Input;
+pub use input::{Input, InputSummary, RequestSource};
 pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;
 pub use links::Peer;
 pub use mission::Mission;
+pub use parameter_warning::ParameterWarning;
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};

@@ -9,7 +9,7 @@ use core::fmt;
 
 use super::error::SystemError;
 use super::events::EventKind;
-use super::input::Input;
+use super::input::{Input, RequestSource};
 use super::kind::ComponentKind;
 use super::mission::Mission;
 use super::rates::Rates;
@@ -19,6 +19,7 @@ use super::wiring::{Report, Wiring};
 use crate::errors::LocalPathError;
 use crate::interfaces::Pose;
 use crate::map::{GridMap, MapUpdate};
+use crate::reason::Reason;
 use crate::rtc::{LifecycleState, Time, period_ticks};
 
 /// The whole robot (module documentation; the wiring is listed in `crate::system`).
@@ -196,7 +197,7 @@ impl System {
     /// [`System::apply`] for a request the system is given on someone's behalf (a
     /// scenario's timeline, a replay): a refusal is logged as
     /// [`EventKind::RequestRefused`] naming `source`. Returns whether it was carried out.
-    pub fn apply_logged(&mut self, input: &Input, source: &str) -> bool {
+    pub fn apply_logged(&mut self, input: &Input, source: RequestSource) -> bool {
         match self.apply(input) {
             Ok(()) => true,
             Err(e) => {
@@ -204,8 +205,9 @@ impl System {
                     time_ns: self.time_ns(),
                     tick: None,
                     facts: vec![EventKind::RequestRefused {
-                        request: format!("{source}: {}", input.describe()),
-                        reason: e.to_string(),
+                        source,
+                        request: input.summary(),
+                        reason: Reason::Error(e),
                     }],
                 };
                 self.record.observe(&report, &self.wiring);

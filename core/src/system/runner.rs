@@ -379,8 +379,12 @@ pub fn judge(
                     reason: report.to_string(),
                 });
             }
-            EventKind::RequestRefused { request, reason } => {
-                *refused = Some(format!("{request}: {reason}"));
+            EventKind::RequestRefused {
+                source,
+                request,
+                reason,
+            } => {
+                *refused = Some(format!("{source}: {request}: {reason}"));
             }
             EventKind::GoalSet { .. } => *refused = None,
             _ => {}

@@ -30,13 +30,14 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
 use super::conf_bundle::unknown_parameter;
-use super::events::SystemEvent;
+use super::events::{EventKind, SystemEvent};
 use super::exercise::{ExerciseStatus, parameter_values};
 use super::exercise_watch::ExerciseWatch;
 use super::history::History;
 use super::input::Input;
 use super::json_text;
 use super::kind::ComponentKind;
+use super::parameter_warning::ParameterWarning;
 use super::rates::Rates;
 use super::robot::System;
 use super::scenario::{FileResolver, MapSource, MemoryResolver, Scenario};
@@ -54,9 +55,6 @@ mod session_clock;
 #[path = "session_replay.rs"]
 mod session_replay;
 pub use session_replay::ReplayCheck;
-
-/// Where a refused request of a replay is said to come from in the log.
-const REPLAY_SOURCE: &str = "the replay";
 
 /// The most wall time one [`Session::advance`] turns into simulated time \[ms\]: a tab that
 /// was in the background resumes where it was instead of catching up in one frame.
@@ -173,8 +171,8 @@ pub struct ParameterView {
     pub seed_text: Option<&'static str>,
     /// What the value in use does that a person should know (spec §4 note: gains that make
     /// the wheel loop unstable or limp; spec §3 Decision 0.2: a `dmin` that lets the body
-    /// touch obstacles); `None` when nothing.
-    pub warning: Option<String>,
+    /// touch obstacles), as data; `None` when nothing.
+    pub warning: Option<ParameterWarning>,
     /// The requested value.
     pub value: f64,
     /// The value the component uses.
@@ -641,7 +639,7 @@ impl Session {
     /// MotorControl's gains of one wheel checked together at its period `dt` \[s\]
     /// ([`GainWarning`]), LocalPathPlanning's `dmin` against the map and the body
     /// ([`Wiring::clearance_warning`](super::Wiring::clearance_warning)).
-    fn warning(&self, kind: ComponentKind, name: &str, dt: f64) -> Option<String> {
+    fn warning(&self, kind: ComponentKind, name: &str, dt: f64) -> Option<ParameterWarning> {
         let wiring = self.system.wiring();
         match (kind, name) {
             (ComponentKind::MotorControl, "PGainL" | "DGainL" | "PGainR" | "DGainR") => {
@@ -657,13 +655,20 @@ impl Session {
                     w @ GainWarning::Limp { .. } if name.starts_with('D') => Some(w),
                     _ => None,
                 }
-                .map(|w| w.to_string())
+                .map(ParameterWarning::from)
             }
-            (ComponentKind::LocalPathPlanning, "dmin") => wiring.clearance_warning().map(|w| {
-                let text = w.to_string();
-                text.strip_prefix("warning: ")
-                    .map_or(text.clone(), str::to_owned)
-            }),
+            (ComponentKind::LocalPathPlanning, "dmin") => match wiring.clearance_warning()? {
+                EventKind::ClearanceWarning {
+                    dmin,
+                    grid_size,
+                    body_radius,
+                } => Some(ParameterWarning::Clearance {
+                    dmin,
+                    grid_size,
+                    body_radius,
+                }),
+                _ => None,
+            },
             _ => None,
         }
     }

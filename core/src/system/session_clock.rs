@@ -74,7 +74,8 @@ impl Session {
             while let Some(input) = self.history.as_mut().and_then(|h| h.take_due(now)) {
                 if self.carry_out(&input, false).is_err() {
                     // Refused, nothing changed: refused again, and logged.
-                    self.system.apply_logged(&input, REPLAY_SOURCE);
+                    self.system
+                        .apply_logged(&input, crate::system::RequestSource::Replay);
                 }
             }
             let now = self.system.time_ns();

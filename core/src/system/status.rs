@@ -7,14 +7,17 @@ use core::fmt;
 
 use serde::Serialize;
 
+use super::activity::ComponentActivity;
 use super::kind::ComponentKind;
 use super::mission::Mission;
 use super::rest::{Measured, Motion};
+use super::robot::System;
 use super::wiring::Wiring;
 use crate::components::{DriveStatus, MotorStatus};
 use crate::interfaces::Direction;
 use crate::motion::DrivePhase;
 use crate::present::fixed;
+use crate::reason::Reason;
 use crate::rtc::LifecycleState;
 
 /// The whole system's state, from its components' states.
@@ -81,8 +84,8 @@ pub enum Status {
     ComponentError {
         /// The component's instance name.
         component: String,
-        /// Its reason.
-        reason: String,
+        /// Its reason, if one is known.
+        reason: Option<Reason>,
         /// What the robot does meanwhile.
         motion: Motion,
     },
@@ -106,7 +109,7 @@ pub enum Status {
     /// GlobalPathPlanning found no route to the goal (it tries again when the map changes).
     NoRoute {
         /// Why.
-        reason: String,
+        reason: Reason,
         /// What the robot does meanwhile.
         motion: Motion,
     },
@@ -114,7 +117,7 @@ pub enum Status {
     /// LocalPathPlanning tries again every second (spec §3 Decision 0.2).
     WaitingForPlan {
         /// The failure that is being retried, if any.
-        retrying: Option<String>,
+        retrying: Option<Reason>,
         /// What the robot does meanwhile.
         motion: Motion,
     },
@@ -141,7 +144,7 @@ pub enum Status {
         /// The component's instance name.
         component: String,
         /// Why.
-        reason: String,
+        reason: Reason,
         /// What the robot does meanwhile.
         motion: Motion,
     },
@@ -190,13 +193,7 @@ impl Status {
             .find(|&k| w.component_state(k) == LifecycleState::Error)
         {
             let id = kind.index();
-            let reason = w
-                .execution_context()
-                .last_error(id)
-                .ok()
-                .flatten()
-                .unwrap_or("")
-                .to_owned();
+            let reason = w.execution_context().last_error(id).ok().flatten().cloned();
             return Self::ComponentError {
                 component: kind.instance_name().to_owned(),
                 reason,
@@ -231,7 +228,7 @@ impl Status {
             && !w.global_path_planning().is_requested()
         {
             return Self::NoRoute {
-                reason: e.to_string(),
+                reason: Reason::Error(e.clone().into()),
                 motion,
             };
         }
@@ -271,7 +268,7 @@ impl Status {
         if let MotorStatus::SafeStop(e) = w.motor_control().status() {
             return Self::SafeStop {
                 component: ComponentKind::MotorControl.instance_name().to_owned(),
-                reason: e.to_string(),
+                reason: Reason::Error(e.clone().into()),
                 motion,
             };
         }
@@ -280,14 +277,14 @@ impl Status {
             DriveStatus::SafeStop(e) => {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
-                    reason: e.to_string(),
+                    reason: Reason::Error(e.clone().into()),
                     motion,
                 };
             }
             DriveStatus::SafetyStop { ahead } => {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
-                    reason: format!("obstacle {} m ahead", fixed(*ahead, 2)),
+                    reason: Reason::ObstacleAhead { ahead: *ahead },
                     motion,
                 };
             }
@@ -366,13 +363,20 @@ impl fmt::Display for Status {
             }
             Self::ComponentError {
                 component,
-                reason,
+                reason: Some(reason),
                 motion,
             } => {
                 write!(
                     f,
                     "{component} in Error: {reason} (Reset recovers); the robot {motion}"
                 )
+            }
+            Self::ComponentError {
+                component,
+                reason: None,
+                motion,
+            } => {
+                write!(f, "{component} in Error (Reset recovers); the robot {motion}")
             }
             Self::Halted { by, motion } => {
                 write!(f, "halted by {by} until the next goal; the robot {motion}")
@@ -454,14 +458,15 @@ pub struct ComponentInfo {
     /// Its rate \[Hz\].
     pub rate: f64,
     /// The reason of its last callback failure (kept until a reset succeeds).
-    pub last_error: Option<String>,
-    /// What it is doing, in a few words.
-    pub status: String,
+    pub last_error: Option<Reason>,
+    /// What it is doing or holds ([`ComponentActivity`]).
+    pub status: ComponentActivity,
 }
 
 impl ComponentInfo {
-    /// Component `kind` of `wiring` now.
-    pub fn of(wiring: &Wiring, kind: ComponentKind) -> Self {
+    /// Component `kind` of `system` now.
+    pub fn of(system: &System, kind: ComponentKind) -> Self {
+        let wiring = system.wiring();
         let id = kind.index();
         let ec = wiring.execution_context();
         Self {
@@ -469,101 +474,16 @@ impl ComponentInfo {
             instance_name: kind.instance_name().to_owned(),
             state: wiring.component_state(kind),
             rate: ec.rate(id).unwrap_or(f64::NAN),
-            last_error: ec.last_error(id).ok().flatten().map(str::to_owned),
-            status: component_status(wiring, kind),
+            last_error: ec.last_error(id).ok().flatten().cloned(),
+            status: ComponentActivity::of(system, kind),
         }
     }
 
-    /// Every component of `wiring`, in attachment order.
-    pub fn all(wiring: &Wiring) -> Vec<Self> {
+    /// Every component of `system`, in attachment order.
+    pub fn all(system: &System) -> Vec<Self> {
         ComponentKind::ALL
             .into_iter()
-            .map(|k| Self::of(wiring, k))
+            .map(|k| Self::of(system, k))
             .collect()
-    }
-}
-
-fn plural(n: u64, one: &str) -> String {
-    if n == 1 {
-        format!("1 {one}")
-    } else {
-        format!("{n} {one}s")
-    }
-}
-
-fn component_status(w: &Wiring, kind: ComponentKind) -> String {
-    // A component in Error does not execute (spec §1): what it held last is not what it does.
-    if w.component_state(kind) == LifecycleState::Error {
-        let ec = w.execution_context();
-        return match ec.last_error(kind.index()).ok().flatten() {
-            Some(reason) => format!("in Error, not executing: {reason}"),
-            None => "in Error, not executing".to_owned(),
-        };
-    }
-    match kind {
-        ComponentKind::MapBuilder => match w.map_builder().map() {
-            Some(m) => format!("map {}×{} at {} m", m.width(), m.height(), m.grid_size()),
-            None => "no map".to_owned(),
-        },
-        ComponentKind::MapMaintenance => {
-            format!(
-                "{} sent",
-                plural(w.map_maintenance().sent_count(), "update")
-            )
-        }
-        ComponentKind::PhysicsSim => {
-            let p = w.physics().physics();
-            format!(
-                "{}{}",
-                plural(p.bump_count(), "bump"),
-                if p.state().in_contact {
-                    ", touching an obstacle"
-                } else {
-                    ""
-                }
-            )
-        }
-        ComponentKind::MotorControl => w.motor_control().status().to_string(),
-        ComponentKind::Localization => {
-            format!("{:?}", w.localization().config().params().mode())
-        }
-        ComponentKind::GlobalPathPlanning => {
-            let g = w.global_path_planning();
-            match (g.last_error(), g.path_length()) {
-                (Some(e), _) => format!("failed: {e}"),
-                (None, Some(l)) => format!("route of {} m", fixed(l, 2)),
-                (None, None) => "no route".to_owned(),
-            }
-        }
-        ComponentKind::LocalPathPlanning => {
-            // The held flags of 000 §5.2.4, the ones that are set, and the plans made.
-            let lpp = w.local_path_planning();
-            let f = lpp.flags();
-            let held: Vec<&str> = [
-                (f.map, "map"),
-                (f.position, "start and goal"),
-                (f.path, "path"),
-                (f.arrived, "arrived"),
-                (f.safe_mode, "SafeMode"),
-            ]
-            .into_iter()
-            .filter_map(|(on, name)| on.then_some(name))
-            .collect();
-            format!(
-                "holds: {}; {} made{}",
-                if held.is_empty() {
-                    "nothing".to_owned()
-                } else {
-                    held.join(", ")
-                },
-                plural(lpp.plan_count(), "plan"),
-                if lpp.retry_at_ns().is_some() {
-                    "; retrying"
-                } else {
-                    ""
-                }
-            )
-        }
-        ComponentKind::DriveControl => w.drive_control().status().to_string(),
     }
 }

@@ -9,12 +9,9 @@
 //! ([`ScenarioEvent::to_input`]) applied before the tick at its time; a refused one is logged
 //! ([`System::apply_logged`]) and the run goes on.
 
-use super::input::Input;
+use super::input::{Input, RequestSource};
 use super::robot::System;
 use super::scenario::ScenarioEvent;
-
-/// Where a refused event is said to come from in the log.
-const SOURCE: &str = "the scenario's timeline";
 
 /// Seconds → nanoseconds as scenario times are rounded.
 pub(super) fn secs_to_ns(s: f64) -> u64 {
@@ -71,7 +68,7 @@ impl Timeline {
             }
             let input: Input = event.to_input(system.map());
             self.next += 1;
-            system.apply_logged(&input, SOURCE);
+            system.apply_logged(&input, RequestSource::Timeline);
         }
     }
 

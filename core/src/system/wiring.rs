@@ -21,6 +21,7 @@ use crate::interfaces::{Direction, GlobalPathCourse, GridPath, PlanningFailure, 
 use crate::local::FieldExtent;
 use crate::map::{GridMap, MapUpdate};
 use crate::motion::{BumpReport, ModelFrame, PhysicsParams};
+use crate::reason::Reason;
 use crate::rtc::{
     Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, Time,
     TimedDouble, TimedDoubleSeq,
@@ -371,7 +372,7 @@ impl Wiring {
             if let Err(e) = r {
                 self.facts.push(EventKind::PlanningFailed {
                     planner: ComponentKind::LocalPathPlanning.name().to_owned(),
-                    reason: format!("GlobalPathCourse refused: {e}"),
+                    reason: Reason::CourseRefused(e),
                 });
             }
         }
@@ -427,32 +428,35 @@ impl Wiring {
             .get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .map_update(u);
         if let Err(e) = r {
-            problems.push(format!("GlobalPathPlanning: {e}"));
+            problems.push((ComponentKind::GlobalPathPlanning, e));
         }
         if let Err(e) = self
             .get_mut::<PhysicsSim>(ComponentKind::PhysicsSim)
             .map_update(u)
         {
-            problems.push(format!("PhysicsSim: {e}"));
+            problems.push((ComponentKind::PhysicsSim, e));
         }
         if let Err(e) = self
             .get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .map_update(u)
         {
-            problems.push(format!("LocalPathPlanning: {e}"));
+            problems.push((ComponentKind::LocalPathPlanning, e));
         }
         if let Err(e) = self
             .get_mut::<DriveControl>(ComponentKind::DriveControl)
             .map_update(u)
         {
-            problems.push(format!("DriveControl: {e}"));
+            problems.push((ComponentKind::DriveControl, e));
         }
         self.map_updates += 1;
-        for p in problems {
+        for (kind, error) in problems {
             self.facts.push(EventKind::ComponentError {
                 component: ComponentKind::MapMaintenance.instance_name().to_owned(),
                 callback: "MapUpdate".to_owned(),
-                reason: p,
+                reason: Reason::MapUpdateRefused {
+                    component: kind.name().to_owned(),
+                    error,
+                },
             });
         }
     }

@@ -185,8 +185,10 @@ fn inject_fault_error_with_reason_reset_and_activate_again() {
     assert_eq!(dc.info.state, LifecycleState::Error);
     assert_eq!(dc.colour, "#ff0000");
     assert_eq!(
-        dc.info.last_error.as_deref(),
-        Some("injected fault: requested from the page")
+        dc.info.last_error,
+        Some(rtnav::Reason::InjectedFault(
+            "requested from the page".to_owned()
+        ))
     );
     assert_eq!(demo.system().state().to_string(), "Error");
     let events = demo.take_events();
@@ -231,12 +233,7 @@ fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
     let physics = &demo.components()[2];
     assert_eq!(physics.info.state, LifecycleState::Error);
     assert!(
-        physics
-            .info
-            .last_error
-            .as_deref()
-            .unwrap()
-            .starts_with("bump: "),
+        matches!(physics.info.last_error, Some(rtnav::Reason::Bump(_))),
         "{:?}",
         physics.info.last_error
     );
@@ -381,7 +378,7 @@ fn the_status_comes_with_its_fields_for_the_page_to_say() {
         serde_json::Value::Object(t.status_fields),
         serde_json::json!({
             "component": "DriveControl0",
-            "reason": format!("injected fault: {FAULT_REASON}"),
+            "reason": {"kind": "injected_fault", "words": FAULT_REASON},
         }),
         "{}",
         t.status

@@ -1,13 +1,22 @@
 // The event log (InventGUI's log): plans, planning failures with their reasons, bumps,
 // arrival, component errors and state changes, map changes — newest first, in simulated-time
-// order — and the page's own notes (a refused goal, a bad map file). The texts are the
-// core's (`rtnav::system::EventKind`), numbers already written for people; the page only
-// writes the time.
+// order — and the page's own notes (a refused goal, a bad map file). Each event is said from
+// its kind and fields (`say.js`); the page writes the time.
+//
+// A condition that repeats (spec §7 "repeats": a safety stop every second, a planning
+// failure retried every second) is one entry with a count and the time of its last repeat;
+// the core's recorded event stream keeps every occurrence.
 import { el } from '../dom.js';
 import { t } from '../i18n.js';
-import { eventText } from '../words.js';
+import { eventText } from '../say.js';
 
 const MAX_ENTRIES = 300;
+/**
+ * The kinds whose occurrences fold into one entry when they say the same thing within
+ * `REPEAT_WINDOW_S` of simulated time of the last one (the condition still holds).
+ */
+const REPEATING = new Set(['SafetyStop', 'PlanningFailed', 'RequestRefused', 'LocalPlanSent']);
+const REPEAT_WINDOW_S = 2.5;
 
 /** Simulated time as a person reads it: seconds with three decimals. */
 export const seconds = (t) => `${t.toFixed(3)} s`;
@@ -37,12 +46,53 @@ export function createEventLog(root, app) {
     Arrived: () => () => !telemetry().arrived,
   };
 
-  /** Adds one entry where its time puts it (newest first; equal times keep their order). */
+  /**
+   * What makes two occurrences the same condition: the kind and the words (a safety stop's
+   * distance ahead changes from one stop to the next; whether it replans does not).
+   */
+  const condition = (e, text) => {
+    if (!REPEATING.has(e.kind)) return null;
+    if (e.kind === 'SafetyStop') return `SafetyStop ${Boolean(e.data?.replanning)}`;
+    if (e.kind === 'LocalPlanSent' && e.data?.cells !== 0) return null;
+    return `${e.kind} ${text}`;
+  };
+
+  /** The entry `e` repeats (its condition, said last within the window), if any. */
+  function repeated(key, e) {
+    if (!key) return null;
+    for (const item of list.children) {
+      if (e.time_s - Number(item.dataset.last) > REPEAT_WINDOW_S) continue;
+      if (item.rtnavCondition === key) return item;
+    }
+    return null;
+  }
+
+  /** Counts one more occurrence of `item`'s condition, at `time_s`. */
+  function repeat(item, time_s) {
+    const count = Number(item.dataset.count) + 1;
+    item.dataset.count = String(count);
+    item.dataset.last = String(time_s);
+    item.querySelector('.repeats').textContent = t('log.repeats', { count, last: seconds(time_s) });
+  }
+
+  /**
+   * Adds one entry where its time puts it (newest first; equal times keep their order), or
+   * counts a repeat of the condition an entry shows.
+   */
   function add(e) {
-    const item = el('li', { dataset: { kind: e.kind, level: e.level, t: String(e.time_s) } },
+    const text = e.kind === 'Page' ? e.text : eventText(e);
+    const key = condition(e, text);
+    const again = repeated(key, e);
+    if (again) {
+      repeat(again, e.time_s);
+      return;
+    }
+    const item = el('li', { dataset: { kind: e.kind, level: e.level, t: String(e.time_s), last: String(e.time_s), count: '1' } },
       el('time', {}, seconds(e.time_s)),
-      el('span', { class: 'text' }, eventText(e)));
+      el('span', { class: 'text' }, text),
+      el('span', { class: 'repeats' }));
     item.rtnavEvent = e; // what the core sent (the end-to-end test reads it back)
+    item.rtnavCondition = key;
     let before = list.firstElementChild;
     while (before && Number(before.dataset.t) > e.time_s) before = before.nextElementSibling;
     list.insertBefore(item, before);

@@ -15,7 +15,7 @@
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
 import { t, has, language } from '../i18n.js';
-import { reasonText } from '../words.js';
+import { warningText } from '../say.js';
 
 const POLL_MS = 500;
 const REFLECTION = {
@@ -240,8 +240,8 @@ export function createParamsPanel(root, app) {
         setText(row.pendingTag, p.pending ? t('params.pending', { value: show(p.effective) }) : '');
         row.node.classList.toggle('changed', p.value !== p.default);
         row.node.classList.toggle('warned', Boolean(p.warning));
-        row.node.dataset.warning = p.warning ?? '';
-        setText(row.warning, p.warning ? `⚠ ${reasonText(p.warning)}` : '');
+        row.node.dataset.warning = p.warning?.kind ?? '';
+        setText(row.warning, p.warning ? `⚠ ${warningText(p.warning)}` : '');
         row.warning.hidden = !p.warning;
         row.node.title = p.value !== p.default ? t('params.default', { value: show(p.default) }) : '';
         if (p.pending) pending++;

@@ -5,7 +5,7 @@
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';
-import { componentStatus, reasonText } from '../words.js';
+import { activityText, reasonText } from '../say.js';
 
 const ACTIONS = {
   Inactive: ['activate', t('rtc.activate')],
@@ -81,9 +81,9 @@ export function createRtcPanel(root, app) {
         setText(r.badge, c.state);
         setText(r.name, c.instance_name);
         setText(r.rate, `${c.rate} Hz`);
-        // A component in Error does not execute (spec §1: only on_error runs): what it last
-        // did is not what it does.
-        setText(r.status, c.state === 'Error' ? t('rtc.not_executing') : componentStatus(c.status));
+        // What it does or holds, as the core decided it (in Error: that it does not execute;
+        // why is the line under it).
+        setText(r.status, activityText(c.status.kind === 'in_error' ? { kind: 'in_error' } : c.status));
         const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: reasonText(c.last_error) }) : '';
         setText(r.reason, why);
         r.reason.hidden = !why;

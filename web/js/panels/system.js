@@ -12,7 +12,7 @@
 // restored — a request the core logs (`Input::CutConnection`).
 import { el, setText, textOn } from '../dom.js';
 import { t, has } from '../i18n.js';
-import { componentStatus, reasonText } from '../words.js';
+import { activityText } from '../say.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 /** How often the view reads the description while shown [ms]. */
@@ -342,7 +342,7 @@ export function createSystemPanel(root, app) {
       node.state.style.fill = ink;
       if (c.state) setText(node.state, `${c.state} · ${c.rate_hz} Hz`);
       if (ci) {
-        const status = ci.state === 'Error' && ci.last_error ? reasonText(ci.last_error) : componentStatus(ci.status);
+        const status = activityText(ci.status);
         const short = status.length > 38 ? `${status.slice(0, 37)}…` : status;
         setText(node.status, short);
         node.status.dataset.full = status;

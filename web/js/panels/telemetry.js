@@ -2,8 +2,8 @@
 // goal is, what the planners have done. `data-*` attributes carry the raw values (the
 // end-to-end test reads them).
 import { el, setText } from '../dom.js';
-import { t, has, language, fixed } from '../i18n.js';
-import { statusText } from '../words.js';
+import { t, fixed } from '../i18n.js';
+import { statusText } from '../say.js';
 
 const FIELDS = [
   ['status', t('telemetry.status')],
@@ -39,10 +39,9 @@ export function createTelemetry(root, app) {
       set('driven', `${fixed(v.path_length, 2)} m`);
       root.dataset.status = v.status_kind;
       set('plans', t('telemetry.plans.value', { global: v.global_plans, local: v.local_plans }));
-      // What the core says is true (rtnav::system::Status), not guessed here.
-      // The core's words in English; in another language, the catalogue's for the status's
-      // kind, with its fields (which component, why).
-      const said = language() !== 'en' && has(`status.${v.status_kind}`) ? statusText(v.status_kind, v.status_fields) : v.status;
+      // What the core says is true (rtnav::system::Status), not guessed here: said from the
+      // catalogue's words for the status's kind, with its fields (which component, why).
+      const said = statusText(v.status_kind, v.status_fields);
       let status = said.charAt(0).toUpperCase() + said.slice(1);
       if (v.paused) status += t('telemetry.paused');
       set('status', status);

@@ -11,7 +11,7 @@ import { Demo } from '../../pkg/rtnav_wasm.js';
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
 import { t, language } from '../i18n.js';
-import { errorText } from '../words.js';
+import { errorText } from '../say.js';
 import { scenarioTitle } from '../scenarios.js';
 
 const POLL_MS = 200;

@@ -631,7 +631,7 @@ impl LocalPathPlanning {
         let notice = PlanningFailure {
             tm: tick.tm(),
             planner: PLANNER.to_owned(),
-            reason: error.to_string(),
+            reason: crate::Reason::Error(error.into()),
         };
         self.invent_gui_failure.write(notice.clone());
         self.last_failure = Some(notice);

@@ -1,0 +1,114 @@
+//! What a parameter's value in use does that a person should know, as data: the warning
+//! shown beside it in the parameters panel (spec §4 note: gains that make a wheel's rate loop
+//! unstable or limp; spec §3 Decision 0.2: a `dmin` that lets the body touch obstacles). A
+//! user interface says it from its catalogue (`warning.<kind>`); its `Display` is the core's
+//! English.
+
+use core::fmt;
+
+use serde::Serialize;
+
+use crate::components::GainWarning;
+use crate::present::number;
+
+/// A parameter's warning (see the module documentation).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, strum::VariantNames)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[strum(serialize_all = "snake_case")]
+pub enum ParameterWarning {
+    /// P is above `2·D/Δt`: the wheel's rate feedback turns positive.
+    GainUnstable {
+        /// The P gain.
+        p: f64,
+        /// The D gain.
+        d: f64,
+        /// The bound `2·D/Δt`.
+        bound: f64,
+    },
+    /// D is 0: nothing holds the wheel at its target rate.
+    GainLimp {
+        /// The P gain.
+        p: f64,
+        /// The rate gain P alone gives, `P·Δt/2` \[N·m·s/rad\].
+        rate_gain: f64,
+    },
+    /// `dmin − GridSize/2 < radiusOfBodyArea`: the body can touch obstacles.
+    Clearance {
+        /// `dmin` \[m\].
+        dmin: f64,
+        /// The map's `GridSize` \[m\].
+        grid_size: f64,
+        /// MotorControl's `radiusOfBodyArea` \[m\].
+        body_radius: f64,
+    },
+}
+
+impl From<GainWarning> for ParameterWarning {
+    fn from(w: GainWarning) -> Self {
+        match w {
+            GainWarning::Unstable { p, d, bound } => Self::GainUnstable { p, d, bound },
+            GainWarning::Limp { p, rate_gain } => Self::GainLimp { p, rate_gain },
+        }
+    }
+}
+
+impl ParameterWarning {
+    /// Every kind a warning serializes with (`warning.<kind>` in a catalogue).
+    pub const KINDS: &'static [&'static str] = <Self as strum::VariantNames>::VARIANTS;
+}
+
+impl fmt::Display for ParameterWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Self::GainUnstable { p, d, bound } => GainWarning::Unstable { p, d, bound }.fmt(f),
+            Self::GainLimp { p, rate_gain } => GainWarning::Limp { p, rate_gain }.fmt(f),
+            Self::Clearance {
+                dmin,
+                grid_size,
+                body_radius,
+            } => write!(
+                f,
+                "the body can touch obstacles: dmin {} m − half a cell ({} m) is less than \
+                 radiusOfBodyArea {} m",
+                number(dmin),
+                number(grid_size / 2.0),
+                number(body_radius)
+            ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every kind serializes as its kind with its fields; the English is the core's.
+    #[test]
+    fn every_kind_serializes_with_its_fields() {
+        let all = [
+            ParameterWarning::from(GainWarning::check(900.0, 0.1, 0.001).unwrap()),
+            ParameterWarning::from(GainWarning::check(20.0, 0.0, 0.001).unwrap()),
+            ParameterWarning::Clearance {
+                dmin: 0.3,
+                grid_size: 0.1,
+                body_radius: 0.3,
+            },
+        ];
+        for (w, kind) in all.iter().zip(ParameterWarning::KINDS) {
+            let v = serde_json::to_value(w).unwrap();
+            assert_eq!(v["kind"], *kind, "{v}");
+            assert!(v.as_object().unwrap().len() >= 3, "{v}");
+        }
+        assert_eq!(serde_json::to_value(all[1]).unwrap()["p"], 20.0);
+        assert!(
+            all[0]
+                .to_string()
+                .starts_with("P 900 is above 2·D/Δt = 200")
+        );
+        assert_eq!(
+            all[2].to_string(),
+            "the body can touch obstacles: dmin 0.3 m − half a cell (0.05 m) is less than \
+             radiusOfBodyArea 0.3 m"
+        );
+    }
+}
