@@ -149,6 +149,7 @@ export function sayer(t, has) {
     if (fields.reason && typeof fields.reason === 'object') vars.reason = reasonText(fields.reason);
     if (fields.retrying && typeof fields.retrying === 'object') vars.retrying = reasonText(fields.retrying);
     if (typeof fields.direction === 'string') vars.direction = t(`status.direction.${fields.direction}`);
+    if (typeof fields.motion === 'string') vars.motion = t(`status.motion.${fields.motion}`);
     let key = `status.${kind}`;
     if (kind === 'waiting_for_plan' && fields.retrying) key = 'status.waiting_for_plan.retrying';
     if (kind === 'component_error' && !fields.reason) key = 'status.component_error.no_reason';
