@@ -379,6 +379,8 @@ fn the_status_comes_with_its_fields_for_the_page_to_say() {
         serde_json::json!({
             "component": "DriveControl0",
             "reason": {"kind": "injected_fault", "words": FAULT_REASON},
+            // The fault came 0.1 s into the drive: the robot had not moved yet.
+            "motion": "stands",
         }),
         "{}",
         t.status
