@@ -8,8 +8,7 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::rtc::LifecycleState;
 use rtnav::system::{
-    ComponentInfo, ComponentKind, EventKind, Input, MapSource, MemoryResolver, Scenario, Session,
-    Telemetry,
+    ComponentKind, EventKind, Input, MapSource, MemoryResolver, Scenario, Session, Telemetry,
 };
 
 fn root() -> &'static Path {
@@ -217,7 +216,7 @@ fn a_nan_pose_puts_localization_in_error_and_reset_recovers() {
     })
     .unwrap();
     s.step_ticks(1);
-    let info = ComponentInfo::of(s.system(), ComponentKind::Localization);
+    let info = s.system().component(ComponentKind::Localization);
     assert_eq!(info.state, LifecycleState::Error);
     assert_eq!(
         info.last_error.map(|r| r.to_string()).as_deref(),

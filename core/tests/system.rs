@@ -80,7 +80,7 @@ fn arrived(s: &System) -> bool {
 }
 
 fn info(s: &System, kind: ComponentKind) -> ComponentInfo {
-    ComponentInfo::of(s, kind)
+    s.component(kind)
 }
 
 /// The newest `MapUpdated` event's `(cells listed, cells changed)`.
@@ -323,7 +323,7 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     // Reset: every component Inactive, the reason gone.
     s.apply(&Input::ResetAll).unwrap();
     assert_eq!(s.state(), SystemState::Inactive);
-    for info in ComponentInfo::all(&s) {
+    for info in s.components() {
         assert_eq!(
             info.state,
             LifecycleState::Inactive,
@@ -519,7 +519,8 @@ fn an_injected_fault_puts_one_component_in_error_with_its_reason() {
 #[test]
 fn components_have_their_rates_states_and_live_configuration() {
     let mut s = system(GOAL);
-    let rates: Vec<_> = ComponentInfo::all(&s)
+    let rates: Vec<_> = s
+        .components()
         .iter()
         .map(|c| (c.instance_name.clone(), c.rate))
         .collect();

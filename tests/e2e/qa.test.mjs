@@ -83,11 +83,11 @@ test('the RTC panel shows a component in Error as not executing', { timeout: 60_
   const { page, problems } = await openPage(browser.context, '?lang=en');
   await activateAll(page);
   await fault(page, 'DriveControl');
-  assert.equal(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'in Error: not executing');
+  assert.equal(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'in Error, not executing');
   // Reset: Inactive, and its own status again.
   await page.click('#components li[data-component="DriveControl"] .act');
   await page.waitForSelector('#components li[data-component="DriveControl"][data-state="Inactive"]', WAIT);
-  assert.notEqual(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'in Error: not executing');
+  assert.notEqual(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'in Error, not executing');
   assert.deepEqual(problems, []);
   await page.close();
 });

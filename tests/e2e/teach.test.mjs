@@ -406,7 +406,7 @@ test('Sensor glitch → Localization in Error naming the port → Reset → Inac
   const reason = await page.textContent(`${loc} .rtc-reason`);
   assert.match(reason, /^Reason: .*InSimulatedPosition/);
   const components = await json(page, 'components_json');
-  assert.match(components.find((c) => c.name === 'Localization').last_error, /InSimulatedPosition/);
+  assert.match(JSON.stringify(components.find((c) => c.name === 'Localization').last_error), /InSimulatedPosition/);
   await screenshot(page, 'teach-glitch.png', { docs: false });
   await page.click(`${loc} .act`);
   await expectState(page, 'Localization', 'Inactive');

@@ -12,7 +12,7 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::rtc::LifecycleState;
-use rtnav::system::{ComponentInfo, ComponentKind, Input, Scenario, Session, System};
+use rtnav::system::{ComponentKind, Input, Scenario, Session, System};
 use wasm_bindgen::prelude::*;
 
 use crate::files::Files;
@@ -312,7 +312,7 @@ impl Inner {
         ComponentKind::ALL
             .into_iter()
             .map(|kind| {
-                let info = ComponentInfo::of(self.system(), kind);
+                let info = self.system().component(kind);
                 ComponentView {
                     name: kind.name(),
                     colour: info.state.editor_colour(),

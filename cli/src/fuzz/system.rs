@@ -23,9 +23,8 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::GridMap;
 use rtnav::rtc::{ParamSpec, ParameterSet};
 use rtnav::system::{
-    BoxSpec, CONF_BUNDLE_HEADER, ComponentInfo, ComponentKind, DirectionSpec, Input,
-    MemoryResolver, PoseSpec, Rates, Scenario, ScenarioEvent, Session, Setup, System,
-    TOKEN_INFLATE_LIMIT, Timeline,
+    BoxSpec, CONF_BUNDLE_HEADER, ComponentKind, DirectionSpec, Input, MemoryResolver, PoseSpec,
+    Rates, Scenario, ScenarioEvent, Session, Setup, System, TOKEN_INFLATE_LIMIT, Timeline,
 };
 
 use super::{Bytes, Case, HOSTILE_F64, INTERESTING_NUMBERS, REFUSED, Target};
@@ -38,7 +37,7 @@ use crate::rng::Rng;
 pub fn fingerprint(s: &System) -> String {
     let mut out = String::new();
     let _ = write!(out, "t={} state={:?}", s.time_ns(), s.state());
-    for info in ComponentInfo::all(s) {
+    for info in s.components() {
         let _ = write!(out, "\n{info:?}");
     }
     let _ = write!(

@@ -13,7 +13,8 @@ use core::fmt;
 use serde::Serialize;
 
 use super::kind::ComponentKind;
-use super::robot::System;
+use super::record::RunStats;
+use super::wiring::Wiring;
 use crate::components::{DriveStatus, LocalizationMode, MotorStatus};
 use crate::motion::DrivePhase;
 use crate::present::{fixed, number};
@@ -165,9 +166,9 @@ impl ComponentActivity {
         ActivityKind::from(self).into()
     }
 
-    /// What component `kind` of `system` is doing or holds now.
-    pub fn of(system: &System, kind: ComponentKind) -> Self {
-        let w = system.wiring();
+    /// What component `kind` of the system whose wiring is `w` and totals `stats` is doing or
+    /// holds now ([`System::components`](super::System::components)).
+    pub fn of(w: &Wiring, stats: &RunStats, kind: ComponentKind) -> Self {
         let state = w.component_state(kind);
         // A component in Error does not execute (spec §1): what it held last is not what it
         // does.
@@ -249,7 +250,7 @@ impl ComponentActivity {
                 Self::LocalPlanning {
                     holds,
                     made: lpp.plan_count(),
-                    sent: system.stats().local_plans,
+                    sent: stats.local_plans,
                     retrying: active && lpp.retry_at_ns().is_some(),
                 }
             }

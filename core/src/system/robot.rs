@@ -14,7 +14,7 @@ use super::kind::ComponentKind;
 use super::mission::Mission;
 use super::rates::Rates;
 use super::record::{Record, RunStats};
-use super::status::{Status, SystemState};
+use super::status::{ComponentInfo, Status, SystemState};
 use super::wiring::{Report, Wiring};
 use crate::errors::LocalPathError;
 use crate::interfaces::Pose;
@@ -381,5 +381,15 @@ impl System {
     /// Running totals.
     pub fn stats(&self) -> RunStats {
         self.record.stats()
+    }
+
+    /// Component `kind` as the RTC panel shows it.
+    pub fn component(&self, kind: ComponentKind) -> ComponentInfo {
+        ComponentInfo::of(&self.wiring, &self.record.stats(), kind)
+    }
+
+    /// Every component as the RTC panel shows it, in attachment order.
+    pub fn components(&self) -> Vec<ComponentInfo> {
+        ComponentInfo::all(&self.wiring, &self.record.stats())
     }
 }

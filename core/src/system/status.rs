@@ -10,8 +10,8 @@ use serde::Serialize;
 use super::activity::ComponentActivity;
 use super::kind::ComponentKind;
 use super::mission::Mission;
+use super::record::RunStats;
 use super::rest::{Measured, Motion};
-use super::robot::System;
 use super::wiring::Wiring;
 use crate::components::{DriveStatus, MotorStatus};
 use crate::interfaces::Direction;
@@ -464,9 +464,9 @@ pub struct ComponentInfo {
 }
 
 impl ComponentInfo {
-    /// Component `kind` of `system` now.
-    pub fn of(system: &System, kind: ComponentKind) -> Self {
-        let wiring = system.wiring();
+    /// Component `kind` of the system whose wiring is `wiring` and totals `stats`, now
+    /// ([`System::component`](super::System::component)).
+    pub fn of(wiring: &Wiring, stats: &RunStats, kind: ComponentKind) -> Self {
         let id = kind.index();
         let ec = wiring.execution_context();
         Self {
@@ -475,15 +475,15 @@ impl ComponentInfo {
             state: wiring.component_state(kind),
             rate: ec.rate(id).unwrap_or(f64::NAN),
             last_error: ec.last_error(id).ok().flatten().cloned(),
-            status: ComponentActivity::of(system, kind),
+            status: ComponentActivity::of(wiring, stats, kind),
         }
     }
 
-    /// Every component of `system`, in attachment order.
-    pub fn all(system: &System) -> Vec<Self> {
+    /// Every component, in attachment order.
+    pub fn all(wiring: &Wiring, stats: &RunStats) -> Vec<Self> {
         ComponentKind::ALL
             .into_iter()
-            .map(|k| Self::of(system, k))
+            .map(|k| Self::of(wiring, stats, k))
             .collect()
     }
 }
