@@ -53,15 +53,17 @@ impl Session {
         self.clock.pending_ns as f64 * 1e-9
     }
 
-    /// Runs `ticks` base ticks now, paused or not (single step).
-    pub fn step_ticks(&mut self, ticks: u64) {
+    /// Runs `ticks` base ticks now, paused or not (single step). More ticks than a run goes
+    /// (24 h of simulated time) are refused ([`SystemError::RunTooLong`](crate::errors::SystemError::RunTooLong)),
+    /// and nothing runs.
+    pub fn step_ticks(&mut self, ticks: u64) -> crate::Result<()> {
         let base = self.system.wiring().execution_context().base_period_ns();
-        let target = self
-            .system
-            .time_ns()
-            .saturating_add(ticks.saturating_mul(base));
+        let asked = ticks.saturating_mul(base);
+        super::super::run_limit::check_run_length("step_ticks", asked as f64 * 1e-9)?;
+        let target = self.system.time_ns().saturating_add(asked);
         self.run_to(target);
         self.look();
+        Ok(())
     }
 
     /// Runs to simulated time `target_ns` (a whole number of base ticks; later if a request
