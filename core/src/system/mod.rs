@@ -69,6 +69,7 @@
 
 mod compare;
 mod conf_bundle;
+mod content_hash;
 mod error;
 mod events;
 mod exercise;
