@@ -72,8 +72,12 @@ impl Session {
     pub(super) fn run_to(&mut self, target_ns: u64) {
         let base = self.system.wiring().execution_context().base_period_ns();
         loop {
-            let now = self.system.time_ns();
-            while let Some(input) = self.history.as_mut().and_then(|h| h.take_due(now)) {
+            // Each request due now, "now" read again after each: a request that plans runs
+            // ticks, and the next one was recorded at the time that left.
+            while let Some(input) = {
+                let now = self.system.time_ns();
+                self.history.as_mut().and_then(|h| h.take_due(now))
+            } {
                 if self.carry_out(&input, false).is_err() {
                     // Refused, nothing changed: refused again, and logged.
                     self.system.apply_logged(&input, REPLAY_SOURCE);
