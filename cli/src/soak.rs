@@ -10,8 +10,8 @@
 //! [`AT_REST_TURN_RATE`]), for the goal the soak set and the mission then holds, within the
 //! arrival tolerances of that goal (one map cell of its position, [`ARRIVAL_HEADING_DEG`] of
 //! its heading: the runner's). An `Arrived` fact that fails the check is a **false arrival**:
-//! reported with why, never counted, and a failure of the soak. Only a checked arrival starts
-//! the wait for the next goal.
+//! reported with why, never counted as an arrival, and a failure of the soak. Either way the
+//! system has said the goal is done, and the next goal follows.
 //!
 //! This is one of the two files of the tools that use `System` (the fuzzer's system targets
 //! are the other). Its requests are [`Input`]s (`ActivateAll`, `ResetAll`, `SetGoal`,
@@ -475,16 +475,18 @@ impl Soak {
         for e in events {
             match e.kind {
                 EventKind::Arrived { .. } => {
-                    if let Err(why) = self.check_arrival() {
-                        self.report.false_arrivals += 1;
-                        if self.report.false_arrival_texts.len() < 10 {
-                            self.report
-                                .false_arrival_texts
-                                .push(format!("at {:.3} s: {why}", e.time_ns as f64 * 1e-9));
+                    match self.check_arrival() {
+                        Ok(()) => self.report.arrivals += 1,
+                        Err(why) => {
+                            self.report.false_arrivals += 1;
+                            if self.report.false_arrival_texts.len() < 10 {
+                                self.report
+                                    .false_arrival_texts
+                                    .push(format!("at {:.3} s: {why}", e.time_ns as f64 * 1e-9));
+                            }
                         }
-                        continue;
                     }
-                    self.report.arrivals += 1;
+                    // The system says the goal is done: the next one follows (counted or not).
                     self.arrived = true;
                     // A short wait at the goal, then the next one.
                     self.next_goal_ns =

@@ -38,8 +38,9 @@ fn a_short_soak_drives_to_goals_around_edits_and_finds_nothing_wrong() {
     let soak = Soak::new(system, Some(scenario.goal.pose()), options(6.0));
     let r = soak.run(|_, _| {});
     println!("{}", r.text());
-    // Arrivals checked by spec §7 (at rest, within the tolerances of the goal held).
-    assert!(r.goals >= 3 && r.arrivals >= 2, "{r:#?}");
+    // `Arrived` facts, each checked by spec §7 (at rest, within the tolerances of the goal
+    // held): counted as arrivals or as false arrivals.
+    assert!(r.goals >= 3 && r.arrivals + r.false_arrivals >= 2, "{r:#?}");
     assert!(r.edits_added >= 5, "{r:#?}");
     // False arrivals — `Arrived` facts the check refuses — are the system's arrival decision
     // (spec §7, Decision 0.3), reported by the soak, which fails on them (`rtnav soak`, the
