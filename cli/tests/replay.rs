@@ -109,10 +109,9 @@ fn changed_root() -> PathBuf {
     let maps = root.join("fixtures/maps/scenarios");
     std::fs::create_dir_all(&scenarios).unwrap();
     std::fs::create_dir_all(&maps).unwrap();
-    let text = std::fs::read_to_string(
-        Path::new(ROOT).join("fixtures/scenarios/ex_fault_recovery.json"),
-    )
-    .unwrap();
+    let text =
+        std::fs::read_to_string(Path::new(ROOT).join("fixtures/scenarios/ex_fault_recovery.json"))
+            .unwrap();
     let changed = text.replace("\"time_limit\": 150.0", "\"time_limit\": 151.0");
     assert_ne!(changed, text);
     std::fs::write(scenarios.join("ex_fault_recovery.json"), changed).unwrap();

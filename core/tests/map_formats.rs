@@ -359,7 +359,10 @@ fn movingai_scen_reads_both_versions_tabs_and_spaces() {
     outside.map_height = 0;
     assert!(matches!(
         outside.start_cell(),
-        Err(MapError::CellOutside { what: "ScenProblem start", .. })
+        Err(MapError::CellOutside {
+            what: "ScenProblem start",
+            ..
+        })
     ));
     outside.map_height = 10;
     outside.goal = (1, 10);

@@ -121,10 +121,11 @@ fn record(recipe: &Recipe) -> String {
             "{recipe:?}: no verdict"
         );
         session.advance(100.0);
-        if recipe.recovers() && session.system().component_state(drive) == LifecycleState::Error
-        {
+        if recipe.recovers() && session.system().component_state(drive) == LifecycleState::Error {
             session.apply(&Input::Reset { component: drive }).unwrap();
-            session.apply(&Input::Activate { component: drive }).unwrap();
+            session
+                .apply(&Input::Activate { component: drive })
+                .unwrap();
         }
     }
     let mut json = session.replay_json().unwrap();
@@ -230,8 +231,9 @@ fn a_replay_of_a_changed_scenario_is_refused_with_that_reason() {
         e => panic!("{e:?}"),
     }
     assert!(
-        e.to_string()
-            .starts_with("replay: scenario `ex_pd_gains` has changed since the replay was recorded"),
+        e.to_string().starts_with(
+            "replay: scenario `ex_pd_gains` has changed since the replay was recorded"
+        ),
         "{e}"
     );
     assert_eq!(s.system().time_ns(), before, "a refusal changes nothing");

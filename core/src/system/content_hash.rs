@@ -26,12 +26,11 @@ impl Scenario {
     /// The scenario's content hash (module documentation), its map files read through
     /// `resolver`.
     pub fn content_hash(&self, resolver: &dyn FileResolver) -> crate::Result<String> {
-        let json = serde_json::to_string(self).map_err(|e| {
-            crate::errors::ScenarioError::Scenario {
+        let json =
+            serde_json::to_string(self).map_err(|e| crate::errors::ScenarioError::Scenario {
                 scenario: crate::present::excerpt(&self.name),
                 reason: format!("cannot be written as JSON: {e}"),
-            }
-        })?;
+            })?;
         let mut hasher = Sha256::new();
         part(&mut hasher, TAG);
         part(&mut hasher, json.as_bytes());
@@ -52,8 +51,7 @@ mod tests {
         "map": {"format": "json", "path": "m.json"},
         "start": {"x": 0.5, "y": 0.5}, "goal": {"x": 2.5, "y": 0.5},
         "time_limit": 30, "expect": {"outcome": "arrived"}}"#;
-    const MAP: &str =
-        r#"{"width": 4, "height": 2, "grid_size": 1.0, "rows": ["....", "...."]}"#;
+    const MAP: &str = r#"{"width": 4, "height": 2, "grid_size": 1.0, "rows": ["....", "...."]}"#;
 
     fn hash(scenario: &str, map: &str) -> String {
         let files = MemoryResolver::new().with("m.json", map.as_bytes().to_vec());
@@ -69,7 +67,9 @@ mod tests {
         assert_eq!(h.len(), 64);
         assert!(h.bytes().all(|b| b.is_ascii_hexdigit()));
         // The same content written otherwise: the same hash.
-        let relaid = SCENARIO.replace("\"x\": 2.5", "\"x\":2.50").replace('\n', " ");
+        let relaid = SCENARIO
+            .replace("\"x\": 2.5", "\"x\":2.50")
+            .replace('\n', " ");
         assert_eq!(hash(&relaid, MAP), h);
         // Another goal, another map cell: another hash.
         assert_ne!(hash(&SCENARIO.replace("2.5", "3.5"), MAP), h);

@@ -16,7 +16,6 @@ use serde::de::DeserializeOwned;
 use crate::present::{floor_char_boundary, with_short_quotes};
 use crate::rtc::without_bom;
 
-
 /// `text` (after a leading byte order mark) read as `T`; the error is serde_json's message,
 /// with a hint when the problem is a number.
 pub(super) fn parse<T: DeserializeOwned>(text: &str) -> Result<T, String> {
@@ -139,8 +138,15 @@ mod tests {
         }
         let key = "ключ".repeat(10_000);
         let e = parse::<Small>(&format!("{{\"{key}\": 1}}")).unwrap_err();
-        assert!(e.chars().count() <= MAX_MESSAGE_CHARS + 40, "{} chars", e.len());
-        assert!(e.starts_with("unknown field `ключключ") && e.contains("…`"), "{e}");
+        assert!(
+            e.chars().count() <= MAX_MESSAGE_CHARS + 40,
+            "{} chars",
+            e.len()
+        );
+        assert!(
+            e.starts_with("unknown field `ключключ") && e.contains("…`"),
+            "{e}"
+        );
         assert!(e.contains(" at line 1 column "), "{e}");
     }
 

@@ -413,7 +413,10 @@ mod tests {
             "{e}"
         );
         let e = refuse(&text.replace(&"a".repeat(64), "abc"));
-        assert!(e.contains("scenario hash `abc` is not 64 hex digits"), "{e}");
+        assert!(
+            e.contains("scenario hash `abc` is not 64 hex digits"),
+            "{e}"
+        );
         let e = refuse(&text.replace("rtnav-replay", "something"));
         assert!(e.contains("not an rtnav replay"), "{e}");
         assert!(refuse("[1, 2").contains("not a JSON object"));
@@ -440,7 +443,10 @@ mod tests {
                 if scenario == "open_field" && *recorded == same && *found == "b".repeat(64)),
             "{e:?}"
         );
-        assert!(e.to_string().contains("scenario `open_field` has changed"), "{e}");
+        assert!(
+            e.to_string().contains("scenario `open_field` has changed"),
+            "{e}"
+        );
         r.behaviour = BEHAVIOUR_VERSION + 1;
         let e = r.check_valid_for(&same).unwrap_err();
         assert_eq!(

@@ -52,7 +52,16 @@ mod tests {
     fn a_run_longer_than_a_day_is_refused_by_name() {
         assert!(check_run_length("run_for seconds", 86_400.0).is_ok());
         let e = check_run_length("run_for seconds", 86_400.001).unwrap_err();
-        assert!(matches!(e, SystemError::RunTooLong { limit_s: 86_400, .. }), "{e:?}");
+        assert!(
+            matches!(
+                e,
+                SystemError::RunTooLong {
+                    limit_s: 86_400,
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
         assert_eq!(
             e.to_string(),
             "run_for seconds asks for 86400.001 s of simulated time, more than the 86400 s \

@@ -227,7 +227,10 @@ impl ScenProblem {
     }
 
     fn cell(&self, (x, y): (usize, usize), what: &'static str) -> Result<Cell, MapError> {
-        let flipped = self.map_height.checked_sub(1).and_then(|top| top.checked_sub(y));
+        let flipped = self
+            .map_height
+            .checked_sub(1)
+            .and_then(|top| top.checked_sub(y));
         match flipped {
             Some(row) if x < self.map_width => Ok((x, row)),
             _ => Err(MapError::CellOutside {
