@@ -528,12 +528,12 @@ impl Soak {
                 let cell = self.system.map().map_or(f64::NAN, |m| m.grid_size());
                 let off = libm::hypot(pose.x - held.x, pose.y - held.y);
                 let turned = rtnav::motion::angle_diff(pose.theta, held.theta).abs();
-                if !(off <= cell) {
+                if off.is_nan() || cell.is_nan() || off > cell {
                     why.push(format!(
                         "{off:.3} m from the goal, more than one cell ({cell} m)"
                     ));
                 }
-                if !(turned.to_degrees() <= ARRIVAL_HEADING_DEG) {
+                if turned.is_nan() || turned.to_degrees() > ARRIVAL_HEADING_DEG {
                     why.push(format!(
                         "{:.1}° off the goal's heading, more than {ARRIVAL_HEADING_DEG}°",
                         turned.to_degrees()

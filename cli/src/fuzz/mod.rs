@@ -419,7 +419,7 @@ pub fn mutate_text(c: &mut Case, target: &dyn Target, rng: &mut Rng) {
         }
         // Deep nesting: JSON arrays or objects, YAML flow collections.
         _ => {
-            let open: &[u8] = *rng.pick(NESTS);
+            let open = rng.pick(NESTS);
             let deepest = if rng.chance(0.2) { 20_000 } else { 600 };
             let depth = 64 + rng.index(deepest);
             let mut run = Vec::with_capacity(open.len() * depth);
