@@ -861,9 +861,7 @@ impl Target for Tokens {
             serde_json::from_slice::<Setup>(body).is_ok()
         };
         match inflated {
-            Some(json) if set_up(&json) => {
-                (64 << 20) + base + 8 * json.len() as u64
-            }
+            Some(json) if set_up(&json) => (64 << 20) + base + 8 * json.len() as u64,
             Some(json) => base + 4 * json.len() as u64,
             None => base + 2 * INFLATE_LIMIT,
         }
