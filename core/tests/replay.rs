@@ -126,7 +126,7 @@ fn an_injected_nan_is_replayed_bit_for_bit() {
 fn a_replay_of_another_version_scenario_or_shape_is_refused_and_nothing_changes() {
     let json = student_run(6.0).replay_json().unwrap();
     for (bad, why) in [
-        (json.replace("\"version\":1", "\"version\":7"), "version 7"),
+        (json.replace("\"version\":2", "\"version\":7"), "version 7"),
         (json.replace("\"end_ns\"", "\"end\""), "malformed"),
         (json[..json.len() / 2].to_owned(), "not a JSON object"),
         (
