@@ -218,6 +218,13 @@ enum Command {
         /// Replay one input (with --seed and --target).
         #[arg(long)]
         case: Option<u64>,
+        /// The kept regression cases (`fixtures/fuzz-regressions`): each target's are run
+        /// first.
+        #[arg(long)]
+        corpus: Option<PathBuf>,
+        /// Write each failing input under this folder, as a regression case to keep.
+        #[arg(long)]
+        save: Option<PathBuf>,
         /// The project's root (fixtures).
         #[arg(long)]
         root: Option<PathBuf>,
@@ -323,8 +330,10 @@ fn main() -> ExitCode {
             seed,
             target,
             case,
+            corpus,
+            save,
             root,
-        } => run_fuzz(seconds, cases, seed, target, case, root),
+        } => run_fuzz(seconds, cases, seed, target, case, (corpus, save), root),
         Command::Soak {
             hours,
             scenario,
@@ -634,6 +643,7 @@ fn run_fuzz(
     seed: Option<u64>,
     only: Vec<String>,
     replay: Option<u64>,
+    (corpus, save): (Option<PathBuf>, Option<PathBuf>),
     root: Option<PathBuf>,
 ) -> CliResult<ExitCode> {
     if !(seconds.is_finite() && seconds >= 0.0) {
@@ -675,6 +685,8 @@ fn run_fuzz(
         cases,
         only,
         replay,
+        corpus,
+        save,
     };
     let reports = fuzz::run_targets(targets, &options, |r| println!("{}", r.line()));
     let tried: u64 = reports.iter().map(|r| r.tried).sum();
@@ -684,10 +696,22 @@ fn run_fuzz(
         .flat_map(|r| r.failures.iter().map(move |f| (r.name.as_str(), f)))
         .collect();
     for (target, f) in &failures {
-        println!(
-            "\nFAILED {target} case {} ({}): {}\n  input: {}\n  replay: rtnav fuzz --seed {seed} --target {target} --case {}",
-            f.case, f.kind, f.message, f.input, f.case
-        );
+        match &f.regression {
+            Some(name) => println!(
+                "\nFAILED {target} kept regression case {name} ({}): {}\n  input: {}",
+                f.kind, f.message, f.input
+            ),
+            None => println!(
+                "\nFAILED {target} case {} ({}): {}\n  input: {}\n  replay: rtnav fuzz --seed {seed} --target {target} --case {}",
+                f.case, f.kind, f.message, f.input, f.case
+            ),
+        }
+        if let Some(path) = &f.saved {
+            println!(
+                "  written to {}: keep it as a regression case in fixtures/fuzz-regressions/{target}/",
+                path.display()
+            );
+        }
     }
     if !alloc::installed() {
         println!("(allocation bounds not checked: the counting allocator is not installed)");

@@ -4,6 +4,15 @@
 //! a **stuck period** (a goal held and no motion for [`STUCK_AFTER_NS`] of simulated time, or
 //! no new goal accepted for as long) and memory that grows.
 //!
+//! **Arrivals are counted as spec §7 defines them** (Decision 0.3): an `Arrived` fact of the
+//! system counts only after the soak has checked it on its own, on the tick it was logged —
+//! the robot **at rest** by the physics' measured speeds (below [`AT_REST_SPEED`] and
+//! [`AT_REST_TURN_RATE`]), for the goal the soak set and the mission then holds, within the
+//! arrival tolerances of that goal (one map cell of its position, [`ARRIVAL_HEADING_DEG`] of
+//! its heading: the runner's). An `Arrived` fact that fails the check is a **false arrival**:
+//! reported with why, never counted as an arrival, and a failure of the soak. Either way the
+//! system has said the goal is done, and the next goal follows.
+//!
 //! This is one of the two files of the tools that use `System` (the fuzzer's system targets
 //! are the other). Its requests are [`Input`]s (`ActivateAll`, `ResetAll`, `SetGoal`,
 //! `MapUpdate`) through [`System::apply`]; it reads the record (events, telemetry), the
@@ -26,7 +35,9 @@ use rtnav::global::AStar;
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::{Cell, GridMap, MapUpdate, within_dmin};
 use rtnav::rtc::Time;
-use rtnav::system::{DEFAULT_TELEMETRY_CAPACITY, EventKind, Input, System, SystemState};
+use rtnav::system::{
+    ARRIVAL_HEADING_DEG, DEFAULT_TELEMETRY_CAPACITY, EventKind, Input, System, SystemState,
+};
 
 use crate::alloc;
 use crate::rng::Rng;
@@ -37,6 +48,10 @@ pub const STUCK_AFTER_NS: u64 = 60_000_000_000;
 const MOVED_M: f64 = 0.01;
 /// … or turned this much \[rad\] since the last motion.
 const TURNED_RAD: f64 = 0.01;
+/// At rest (spec §7): the physics' measured speed below this \[m/s\] …
+pub const AT_REST_SPEED: f64 = 0.01;
+/// … and its turn rate below this \[rad/s\].
+pub const AT_REST_TURN_RATE: f64 = 0.01;
 /// Heap growth allowed after the warm-up.
 pub const MEMORY_TOLERANCE: f64 = 0.05;
 /// One step of the soak's loop: 100 ms (100 base ticks at 1 kHz).
@@ -138,8 +153,13 @@ pub struct SoakReport {
     pub goals_refused: u64,
     /// Goals given up: not reached within their time allowance, while the robot moved.
     pub goals_given_up: u64,
-    /// Arrivals.
+    /// Arrivals: `Arrived` facts that the soak's own check confirmed (spec §7: at rest,
+    /// within the tolerances of the goal then held).
     pub arrivals: u64,
+    /// `Arrived` facts that failed the check: not counted as arrivals.
+    pub false_arrivals: u64,
+    /// The first false arrivals, with why.
+    pub false_arrival_texts: Vec<String>,
     /// Bumps.
     pub bumps: u64,
     /// Component errors other than a bump's (callback failures).
@@ -165,9 +185,16 @@ pub struct SoakReport {
 }
 
 impl SoakReport {
-    /// Why the soak failed, if it did: bumps, component errors, stuck periods, memory growth.
+    /// Why the soak failed, if it did: false arrivals, bumps, component errors, stuck
+    /// periods, memory growth.
     pub fn problems(&self) -> Vec<String> {
         let mut p = Vec::new();
+        if self.false_arrivals > 0 {
+            p.push(format!(
+                "{} false arrivals (Arrived facts not at rest within the goal's tolerances)",
+                self.false_arrivals
+            ));
+        }
         if self.bumps > 0 {
             p.push(format!("{} bumps", self.bumps));
         }
@@ -195,7 +222,14 @@ impl SoakReport {
             "goals             {} accepted, {} refused, {} given up\n",
             self.goals, self.goals_refused, self.goals_given_up
         );
-        s += &format!("arrivals          {}\n", self.arrivals);
+        s += &format!(
+            "arrivals          {} (Arrived facts checked: at rest within the goal's tolerances)\n",
+            self.arrivals
+        );
+        s += &format!("false arrivals    {}\n", self.false_arrivals);
+        for e in &self.false_arrival_texts {
+            s += &format!("                  {e}\n");
+        }
         s += &format!("bumps             {}\n", self.bumps);
         s += &format!("component errors  {}\n", self.component_errors);
         for e in &self.error_texts {
@@ -406,11 +440,17 @@ impl Soak {
         self.report
     }
 
-    /// One chunk: step, read the events, watch motion, recover, goals, edits, memory.
+    /// One chunk: step (reading the events on the tick they are logged, so an arrival is
+    /// checked on the physics' state of that tick), watch motion, recover, goals, edits,
+    /// memory.
     fn chunk(&mut self) {
-        self.system.step(CHUNK_TICKS);
+        for _ in 0..CHUNK_TICKS {
+            self.system.step(1);
+            if self.system.record().event_count() != self.events_seen {
+                self.read_events();
+            }
+        }
         let now = self.system.time_ns();
-        self.read_events();
         let bumps = self.system.stats().bumps;
         if bumps > self.bumps_seen {
             self.report.bumps += bumps - self.bumps_seen;
@@ -435,7 +475,18 @@ impl Soak {
         for e in events {
             match e.kind {
                 EventKind::Arrived { .. } => {
-                    self.report.arrivals += 1;
+                    match self.check_arrival() {
+                        Ok(()) => self.report.arrivals += 1,
+                        Err(why) => {
+                            self.report.false_arrivals += 1;
+                            if self.report.false_arrival_texts.len() < 10 {
+                                self.report
+                                    .false_arrival_texts
+                                    .push(format!("at {:.3} s: {why}", e.time_ns as f64 * 1e-9));
+                            }
+                        }
+                    }
+                    // The system says the goal is done: the next one follows (counted or not).
                     self.arrived = true;
                     // A short wait at the goal, then the next one.
                     self.next_goal_ns =
@@ -458,6 +509,45 @@ impl Soak {
                 }
                 _ => {}
             }
+        }
+    }
+
+    /// The soak's own check of an `Arrived` fact, made on the tick it was logged: the
+    /// robot at rest by the physics' measured speeds, the mission holding the goal the soak
+    /// set, the robot within one cell and [`ARRIVAL_HEADING_DEG`] of it. `Err` says why not.
+    fn check_arrival(&self) -> Result<(), String> {
+        let (v, w) = self.system.wiring().physics().physics().body_velocity();
+        let pose = self.system.robot_pose();
+        let held = self.system.mission().goal();
+        let mut why = Vec::new();
+        if !(v.abs() < AT_REST_SPEED && w.abs() < AT_REST_TURN_RATE) {
+            why.push(format!("not at rest ({v:.4} m/s, {w:.4} rad/s)"));
+        }
+        match (self.goal, held) {
+            (Some(set), Some(held)) if set == held => {
+                let cell = self.system.map().map_or(f64::NAN, |m| m.grid_size());
+                let off = libm::hypot(pose.x - held.x, pose.y - held.y);
+                let turned = rtnav::motion::angle_diff(pose.theta, held.theta).abs();
+                if off.is_nan() || cell.is_nan() || off > cell {
+                    why.push(format!(
+                        "{off:.3} m from the goal, more than one cell ({cell} m)"
+                    ));
+                }
+                if turned.is_nan() || turned.to_degrees() > ARRIVAL_HEADING_DEG {
+                    why.push(format!(
+                        "{:.1}° off the goal's heading, more than {ARRIVAL_HEADING_DEG}°",
+                        turned.to_degrees()
+                    ));
+                }
+            }
+            (set, held) => why.push(format!(
+                "the goal held ({held:?}) is not the goal set ({set:?})"
+            )),
+        }
+        if why.is_empty() {
+            Ok(())
+        } else {
+            Err(why.join("; "))
         }
     }
 

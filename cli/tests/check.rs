@@ -101,7 +101,7 @@ fn fault_replay(recover: bool) -> PathBuf {
     s.apply(&Input::ActivateAll).unwrap();
     let drive = ComponentKind::DriveControl;
     while s.system().component_state(drive) != LifecycleState::Error {
-        s.step_ticks(100);
+        s.step_ticks(100).unwrap();
         assert!(s.system().time() < 60.0, "no fault");
     }
     if recover {
@@ -113,7 +113,7 @@ fn fault_replay(recover: bool) -> PathBuf {
         Verdict::Waiting | Verdict::Running
     ) && s.system().time() < 160.0
     {
-        s.step_ticks(1_000);
+        s.step_ticks(1_000).unwrap();
     }
     let path = std::env::temp_dir().join(format!(
         "rtnav-check-{}-{recover}.rtnav.json",

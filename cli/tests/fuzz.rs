@@ -1,6 +1,7 @@
-//! The short fuzz run of `cargo test` (and so `cargo xtask test`): every target for a fixed
-//! number of inputs under a fixed seed, so CI is repeatable; `cargo xtask fuzz --seconds N`
-//! runs longer with fresh seeds. Each input is checked for panics, time (1 s), allocation
+//! The short fuzz run of `cargo test`: every target for a fixed number of inputs under a
+//! fixed seed, after every kept regression case (`fixtures/fuzz-regressions/`); the fuzz
+//! stage of `cargo xtask test` runs the readers for a time budget with a fresh seed, and
+//! `cargo xtask fuzz --seconds N` longer. Each input is checked for panics, time (1 s), allocation
 //! (this binary counts with its own allocator) and refused calls that change something.
 
 use std::path::PathBuf;
@@ -16,6 +17,9 @@ static ALLOCATOR: Counting = Counting;
 /// The seed of the CI run (any failure prints it with its case number for `rtnav fuzz`).
 const SEED: u64 = 18;
 
+/// The kept regression cases, under the project's root.
+const CORPUS: &str = "fixtures/fuzz-regressions";
+
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
 }
@@ -29,13 +33,9 @@ fn run(names: &[&str], cases: u64) -> Vec<TargetReport> {
             None
         }
     };
-    let options = Options {
-        seed: SEED,
-        per_target: Duration::ZERO,
-        cases: Some(cases),
-        only: names.iter().map(|s| (*s).to_owned()).collect(),
-        replay: None,
-    };
+    let mut options = Options::new(SEED, Duration::ZERO, Some(cases));
+    options.only = names.iter().map(|s| (*s).to_owned()).collect();
+    options.corpus = Some(root.join(CORPUS));
     let reports = fuzz::run(&root, data.as_deref(), &options, |r| {
         println!("{}", r.line())
     });
@@ -63,9 +63,47 @@ fn the_readers_hold_for_hostile_inputs() {
             "movingai-scen",
             "conf",
             "scenario",
+            "replay",
         ],
         150,
     );
+}
+
+/// Every input that once failed, kept in `fixtures/fuzz-regressions/TARGET/`, passes now (the
+/// runs above replay them too, before their own inputs; this names each).
+#[test]
+fn every_kept_regression_case_passes() {
+    let root = root();
+    let dir = root.join(CORPUS);
+    let mut options = Options::new(SEED, Duration::ZERO, Some(0));
+    options.corpus = Some(dir.clone());
+    let reports = fuzz::run(
+        &root,
+        rtnav::data::data_dir(&root).ok().as_deref(),
+        &options,
+        |r| println!("{}", r.line()),
+    );
+    let mut kept = 0;
+    for r in &reports {
+        kept += r.regressions;
+        assert!(
+            r.failures.is_empty(),
+            "{}: kept regression cases fail: {:#?}",
+            r.name,
+            r.failures
+        );
+    }
+    // Every folder names a target, and the folders hold cases.
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        if name != "README.md" {
+            assert!(
+                reports.iter().any(|r| r.name == name),
+                "fixtures/fuzz-regressions/{name}: no such target"
+            );
+        }
+    }
+    assert!(kept >= 4, "{kept} kept regression cases");
 }
 
 #[test]
@@ -88,7 +126,7 @@ fn the_system_refuses_hostile_calls_and_lifecycle_requests_without_changing() {
 /// past the 16 MiB limit costs its inflated bytes, twice at most, and a short message).
 #[test]
 fn share_tokens_are_refused_cheaply() {
-    run(&["share-token"], 150);
+    run(&["share-token", "share-json"], 150);
 }
 
 /// The checks have teeth: a call that is refused but changes the system is caught.
@@ -135,13 +173,7 @@ fn panics_slowness_and_allocation_are_reported() {
             1024
         }
     }
-    let options = Options {
-        seed: 1,
-        per_target: Duration::ZERO,
-        cases: Some(30),
-        only: Vec::new(),
-        replay: None,
-    };
+    let options = Options::new(1, Duration::ZERO, Some(30));
     let r = fuzz::run_target(&mut Bad, &options);
     assert_eq!(r.failed, 30);
     let kinds: std::collections::BTreeSet<&str> = r.failures.iter().map(|f| f.kind).collect();

@@ -1,6 +1,7 @@
 //! `rtnav replay` and `rtnav compare` (issue 16): a replay recorded by a session reproduces
 //! its trace hash from the command line (PNG and CSV written); a tampered hash exits 1, a
-//! file of another version exits 2 with the reason; PostureConsiderationLevel 0 vs 85 on
+//! file of another version exits 2 with the reason, and so does a kept hand-in of a scenario
+//! that has changed since; PostureConsiderationLevel 0 vs 85 on
 //! parking_wall prints different arrival headings.
 
 use std::path::{Path, PathBuf};
@@ -31,19 +32,19 @@ fn recorded() -> (String, String) {
     s.load_scenario(Scenario::from_json(&text).unwrap(), &DirResolver::new(ROOT))
         .unwrap();
     s.apply(&Input::ActivateAll).unwrap();
-    s.step_ticks(2_000);
+    s.step_ticks(2_000).unwrap();
     s.apply(&Input::MapUpdate {
         cells: (150..158).map(|x| (x, 101, 1)).collect(),
     })
     .unwrap();
-    s.step_ticks(2_000);
+    s.step_ticks(2_000).unwrap();
     s.set_param_text(
         ComponentKind::LocalPathPlanning,
         "PostureConsiderationLevel",
         "85",
     )
     .unwrap();
-    s.step_ticks(6_000);
+    s.step_ticks(6_000).unwrap();
     (
         s.replay_json().unwrap(),
         s.system().record().telemetry().trace_hash(),
@@ -90,14 +91,71 @@ fn a_replay_file_reproduces_its_hash_and_a_bad_one_is_refused() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("reproduced      NO"));
 
     // Another version: refused with the reason (exit 2).
-    std::fs::write(&file, json.replace("\"version\":1", "\"version\":3")).unwrap();
+    std::fs::write(&file, json.replace("\"version\":2", "\"version\":3")).unwrap();
     let out = rtnav(&["replay", f, "--root", ROOT]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("version 3") && err.contains("reads version 1"),
+        err.contains("version 3") && err.contains("reads version 2"),
         "{err}"
     );
+}
+
+/// A copy of the repository's `ex_fault_recovery` scenario and its map under a folder of its
+/// own, the scenario's time limit changed: the scenario a kept hand-in names has changed.
+fn changed_root() -> PathBuf {
+    let root = temp("changed-root");
+    let scenarios = root.join("fixtures/scenarios");
+    let maps = root.join("fixtures/maps/scenarios");
+    std::fs::create_dir_all(&scenarios).unwrap();
+    std::fs::create_dir_all(&maps).unwrap();
+    let text =
+        std::fs::read_to_string(Path::new(ROOT).join("fixtures/scenarios/ex_fault_recovery.json"))
+            .unwrap();
+    let changed = text.replace("\"time_limit\": 150.0", "\"time_limit\": 151.0");
+    assert_ne!(changed, text);
+    std::fs::write(scenarios.join("ex_fault_recovery.json"), changed).unwrap();
+    std::fs::copy(
+        Path::new(ROOT).join("fixtures/maps/scenarios/open_field.json"),
+        maps.join("open_field.json"),
+    )
+    .unwrap();
+    root
+}
+
+#[test]
+fn a_kept_hand_in_of_a_changed_scenario_is_refused_with_that_reason() {
+    let hand_in = "../fixtures/replays/ex_fault_recovery.solution.rtnav.json";
+    let root = changed_root();
+    let root = root.to_str().unwrap();
+    let reason = "scenario `ex_fault_recovery` has changed since the replay was recorded";
+    let out = rtnav(&["replay", hand_in, "--root", root]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains(reason), "{err}");
+    let scenario = format!("{root}/fixtures/scenarios/ex_fault_recovery.json");
+    let out = rtnav(&["check", &scenario, "--replay", hand_in, "--root", root]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains(reason), "{err}");
+    // The same hand-in on the repository's scenario replays, and passes.
+    let out = rtnav(&["replay", hand_in, "--root", ROOT]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("reproduced      yes"));
+    let out = rtnav(&[
+        "check",
+        "../fixtures/scenarios/ex_fault_recovery.json",
+        "--replay",
+        hand_in,
+        "--root",
+        ROOT,
+    ]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("verdict  PASSED"));
 }
 
 #[test]

@@ -85,14 +85,21 @@ fn load(data: &Path) -> Vec<Case> {
 /// Our planner: the path length in cells.
 fn ours(astar: &mut AStar, p: &ScenProblem) -> f64 {
     astar
-        .plan(p.start_cell(), p.goal_cell())
+        .plan(
+            p.start_cell().expect("checked on reading"),
+            p.goal_cell().expect("checked on reading"),
+        )
         .expect("solvable")
         .length_cells()
 }
 
 /// `pathfinding::astar` with the same rules; the path length in cells.
 fn theirs(grid: &AStar, p: &ScenProblem) -> f64 {
-    baseline::pathfinding_astar(grid, p.start_cell(), p.goal_cell())
+    baseline::pathfinding_astar(
+        grid,
+        p.start_cell().expect("checked on reading"),
+        p.goal_cell().expect("checked on reading"),
+    )
 }
 
 fn criterion_mode(cases: &mut [Case]) {

@@ -30,3 +30,15 @@ pub mod system;
 
 pub use errors::{Error, ErrorDetail, Result};
 pub use reason::Reason;
+
+/// The behaviour version of the core: which runs this build makes from a given set-up and
+/// requests. A replay records it (spec §6, Decision 0.3, hand-ins stay valid), and a replay of
+/// another behaviour version is refused with that reason rather than judged by a build whose
+/// runs differ.
+///
+/// **Raise it by one whenever a change of behaviour changes traces** — a golden trace hash,
+/// a replay fixture's trace hash or an exercise's verdict on one (the test
+/// `core/tests/replay_fixtures.rs` fails until the fixtures are re-blessed: `RTNAV_BLESS=1
+/// cargo test -p rtnav --test replay_fixtures`) — and say in `CHANGELOG.md` why the new
+/// traces are right.
+pub const BEHAVIOUR_VERSION: u32 = 1;

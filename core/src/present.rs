@@ -1,6 +1,67 @@
-//! Numbers for people: what the core's words (event texts, warnings, statuses) print, so a
-//! value computed in binary reads as a person would write it (`4000`, not
-//! `4000.0000000000005`; `0.0025`, not `0.0025000000000000005`).
+//! Numbers and quoted text for people: what the core's words (event texts, warnings,
+//! statuses) print, so a value computed in binary reads as a person would write it (`4000`,
+//! not `4000.0000000000005`; `0.0025`, not `0.0025000000000000005`), and what an error
+//! message quotes of a file is short and cut where a character ends ([`excerpt`]).
+
+/// The characters of a person's text an error message quotes at most ([`excerpt`]).
+pub const EXCERPT_CHARS: usize = 40;
+
+/// `text` as an error message quotes it: at most [`EXCERPT_CHARS`] characters, cut with `…`,
+/// so a file that is not what it should be (one enormous line, key or value) gives a short
+/// message. The cut is counted in characters, never in bytes, so it never lands inside a
+/// multi-byte character: the one helper every reader's error uses to quote its input.
+pub fn excerpt(text: &str) -> String {
+    excerpt_of(text, EXCERPT_CHARS)
+}
+
+/// `text` cut to at most `chars` characters, with `…` when something was cut.
+pub fn excerpt_of(text: &str, chars: usize) -> String {
+    match text.char_indices().nth(chars) {
+        Some((cut, _)) => format!("{}…", text.get(..cut).unwrap_or_default()),
+        None => text.to_owned(),
+    }
+}
+
+/// The most characters of a message a reader's error quotes from a parser (serde_json's,
+/// which quotes what it could not use in full), its position left out
+/// ([`with_short_quotes`]).
+pub const MAX_MESSAGE_CHARS: usize = 360;
+
+/// A parser's `message` with every quotation between backticks cut to an [`excerpt`], and
+/// at most [`MAX_MESSAGE_CHARS`] characters in all: what a reader says of a file however
+/// long the key or value the parser quotes.
+pub fn with_short_quotes(message: &str) -> String {
+    let mut out = String::new();
+    let mut rest = message;
+    while let Some(open) = rest.find('`') {
+        out.push_str(&rest[..=open]);
+        let after = &rest[open + 1..];
+        match after.find('`') {
+            Some(close) => {
+                out.push_str(&excerpt(&after[..close]));
+                out.push('`');
+                rest = &after[close + 1..];
+            }
+            None => {
+                out.push_str(&excerpt(after));
+                rest = "";
+            }
+        }
+    }
+    out.push_str(rest);
+    excerpt_of(&out, MAX_MESSAGE_CHARS)
+}
+
+/// The longest index `≤ at` that is a character boundary of `text` (`text.len()` at most):
+/// where a byte offset reported by a parser (serde_json's column counts bytes) may cut
+/// `text` without landing inside a multi-byte character.
+pub fn floor_char_boundary(text: &str, at: usize) -> usize {
+    let mut i = at.min(text.len());
+    while !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
 
 /// `v` rounded to six significant digits, without trailing zeros: plain from 10⁻⁴ to below
 /// 10⁹, else in scientific form (`1.5e-7`, `2e12`); `NaN`, `inf` and `-inf` as such.
@@ -58,7 +119,7 @@ fn trim(s: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{fixed, number, place};
+    use super::{excerpt, excerpt_of, fixed, floor_char_boundary, number, place};
 
     #[test]
     fn places_read_in_metres_with_the_cell() {
@@ -66,6 +127,22 @@ mod tests {
             place((1.55 + 1e-15, 0.05), (15, 0)),
             "(1.55 m, 0.05 m) (cell 15, 0)"
         );
+    }
+
+    #[test]
+    fn excerpts_are_cut_on_characters_and_bounded() {
+        assert_eq!(excerpt("short"), "short");
+        let long = "é".repeat(100);
+        assert_eq!(excerpt(&long), format!("{}…", "é".repeat(40)));
+        assert_eq!(excerpt_of("あいう", 2), "あい…");
+        assert_eq!(excerpt_of("😀😀", 0), "…");
+        assert_eq!(excerpt_of("", 3), "");
+        for at in 0..8 {
+            let b = floor_char_boundary("aé😀", at);
+            assert!("aé😀".is_char_boundary(b) && b <= at, "{at} → {b}");
+        }
+        assert_eq!(floor_char_boundary("aé", 2), 1);
+        assert_eq!(floor_char_boundary("aé", 99), 3);
     }
 
     #[test]

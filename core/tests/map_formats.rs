@@ -350,7 +350,25 @@ fn movingai_scen_reads_both_versions_tabs_and_spaces() {
         ((1, 11), (1, 12), 1.0)
     );
     // Converted like the map: y counted from the bottom.
-    assert_eq!((a[0].start_cell(), a[0].goal_cell()), ((1, 37), (1, 36)));
+    assert_eq!(
+        (a[0].start_cell().unwrap(), a[0].goal_cell().unwrap()),
+        ((1, 37), (1, 36))
+    );
+    // A problem built by hand outside its map is refused, never an underflow.
+    let mut outside = a[0].clone();
+    outside.map_height = 0;
+    assert!(matches!(
+        outside.start_cell(),
+        Err(MapError::CellOutside {
+            what: "ScenProblem start",
+            ..
+        })
+    ));
+    outside.map_height = 10;
+    outside.goal = (1, 10);
+    assert!(outside.goal_cell().is_err());
+    outside.goal = (99, 0);
+    assert!(outside.goal_cell().is_err());
     assert_eq!((b[0].bucket, b[0].optimal_length), (3, 1.5));
     let e = |s: &str| text(movingai::load_scen(s).unwrap_err());
     assert!(e("version 2\n").contains("expected `version 1`"));

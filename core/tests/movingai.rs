@@ -43,7 +43,7 @@ fn map_of(scen: &Path) -> PathBuf {
 }
 
 fn check_problem(astar: &mut AStar, p: &ScenProblem, what: &str) {
-    let (s, g) = (p.start_cell(), p.goal_cell());
+    let (s, g) = (p.start_cell().unwrap(), p.goal_cell().unwrap());
     let plan = astar.plan(s, g).unwrap_or_else(|e| panic!("{what}: {e}"));
     let len = plan.length_cells();
     let tol = 1e-4 * p.optimal_length.max(1.0);

@@ -126,7 +126,7 @@ fn an_injected_nan_is_replayed_bit_for_bit() {
 fn a_replay_of_another_version_scenario_or_shape_is_refused_and_nothing_changes() {
     let json = student_run(6.0).replay_json().unwrap();
     for (bad, why) in [
-        (json.replace("\"version\":1", "\"version\":7"), "version 7"),
+        (json.replace("\"version\":2", "\"version\":7"), "version 7"),
         (json.replace("\"end_ns\"", "\"end\""), "malformed"),
         (json[..json.len() / 2].to_owned(), "not a JSON object"),
         (
@@ -255,7 +255,7 @@ fn any_seek_on_a_five_minute_run_is_fast() {
     ];
     let mut next = 0;
     while s.system().time() < 300.0 {
-        s.step_ticks(500);
+        s.step_ticks(500).unwrap();
         if s.system().mission().is_arrived() {
             s.apply(&Input::SetGoal {
                 goal: corners[next],
@@ -329,12 +329,12 @@ fn a_cut_connection_is_recorded_and_seeking_keeps_when_it_was_cut() {
     };
     let mut s = loaded("open_field");
     s.apply(&Input::ActivateAll).unwrap();
-    s.step_ticks(3_000);
+    s.step_ticks(3_000).unwrap();
     s.apply(&Input::CutConnection {
         connection: TARGET_VELOCITY.to_owned(),
     })
     .unwrap();
-    s.step_ticks(3_000);
+    s.step_ticks(3_000).unwrap();
     let (cut, carried) = cut_at(&s);
     assert!(cut);
     let replay = s.replay().unwrap();

@@ -215,7 +215,7 @@ fn a_nan_pose_puts_localization_in_error_and_reset_recovers() {
         data: vec![f64::NAN, 0.0, 0.0, 0.0],
     })
     .unwrap();
-    s.step_ticks(1);
+    s.step_ticks(1).unwrap();
     let info = s.system().component(ComponentKind::Localization);
     assert_eq!(info.state, LifecycleState::Error);
     assert_eq!(

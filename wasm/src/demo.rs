@@ -158,9 +158,10 @@ impl Inner {
     }
 
     /// Runs `ticks` base ticks (paused or not).
-    pub(crate) fn run_ticks(&mut self, ticks: u64) {
-        self.session.step_ticks(ticks);
+    pub(crate) fn run_ticks(&mut self, ticks: u64) -> Msg<()> {
+        self.session.step_ticks(ticks).map_err(refused)?;
         self.dirty = true;
+        Ok(())
     }
 
     pub(crate) fn set_speed(&mut self, speed: f64) -> Msg<()> {
@@ -516,8 +517,8 @@ impl Demo {
     }
 
     /// Runs `ticks` base ticks now, paused or not (the page's single step: one tick).
-    pub fn step_ticks(&mut self, ticks: u32) {
-        self.0.run_ticks(u64::from(ticks));
+    pub fn step_ticks(&mut self, ticks: u32) -> Result<(), JsValue> {
+        self.0.run_ticks(u64::from(ticks)).map_err(js)
     }
 
     /// Simulated time \[s\].

@@ -1,11 +1,42 @@
 //! `cargo xtask fuzz [--seconds N] [--seed S] [--target NAME]…`: the project's fuzzer
 //! (`rtnav fuzz`, `cli/src/fuzz/`) in release mode, on stable Rust. `--seconds` is the wall
 //! time in all, shared evenly by the targets (default 300); the seed is printed (from the
-//! clock unless given), and every failure with the command that replays it. The short,
-//! fixed-seed run of CI is `cli/tests/fuzz.rs`, part of `cargo test`.
+//! clock unless given), and every failure with the command that replays it. The kept
+//! regression cases (`fixtures/fuzz-regressions/`) run first, and a failing input is written
+//! to `target/fuzz-failures/TARGET/`, ready to be kept there.
+//!
+//! `cargo xtask test` has a fuzz stage ([`test_stage`]): the readers of a person's text and
+//! files, each for [`STAGE_SECONDS_PER_TARGET`] with a fresh seed (printed), after their kept
+//! regression cases, with the debug runner `cargo test` has already built. The short,
+//! fixed-seed run of `cli/tests/fuzz.rs` is part of `cargo test`.
 
 use crate::Result;
-use crate::tools::{cargo, run};
+use crate::tools::{cargo, repo_root, run, target_dir};
+
+/// The targets of the fuzz stage: every reader of untrusted text or files (spec §6,
+/// Decision 0.3) — scenario, replay and share-link JSON, `.conf` files and bundles, the map
+/// formats and their YAML.
+pub const STAGE_TARGETS: &[&str] = &[
+    "scenario",
+    "replay",
+    "share-json",
+    "share-token",
+    "conf",
+    "conf-bundle",
+    "json-map",
+    "ros-yaml",
+    "ros-map",
+    "movingai-map",
+    "movingai-scen",
+];
+
+/// The stage's time budget per target \[s\] (11 targets: about 100 s in all).
+pub const STAGE_SECONDS_PER_TARGET: f64 = 9.0;
+
+/// Where a failing input is written.
+fn failures_dir() -> std::path::PathBuf {
+    target_dir().join("fuzz-failures")
+}
 
 /// Runs the fuzzer with the options in `rest` (passed through after checking).
 pub fn fuzz(rest: &[String]) -> Result {
@@ -45,5 +76,29 @@ pub fn fuzz(rest: &[String]) -> Result {
             "--seconds",
         ])
         .arg(&seconds)
+        .arg("--corpus")
+        .arg(repo_root().join("fixtures/fuzz-regressions"))
+        .arg("--save")
+        .arg(failures_dir())
         .args(&args))
+}
+
+/// The fuzz stage of `cargo xtask test` (module documentation). The note is the budget.
+pub fn test_stage() -> Result<Option<String>> {
+    let seconds = STAGE_SECONDS_PER_TARGET * STAGE_TARGETS.len() as f64;
+    let mut c = cargo();
+    c.args(["run", "-q", "-p", "rtnav-cli", "--", "fuzz", "--seconds"])
+        .arg(seconds.to_string())
+        .arg("--corpus")
+        .arg(repo_root().join("fixtures/fuzz-regressions"))
+        .arg("--save")
+        .arg(failures_dir());
+    for t in STAGE_TARGETS {
+        c.args(["--target", t]);
+    }
+    run(&mut c)?;
+    Ok(Some(format!(
+        "{} readers × {STAGE_SECONDS_PER_TARGET} s, fresh seed",
+        STAGE_TARGETS.len()
+    )))
 }

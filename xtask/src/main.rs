@@ -10,7 +10,7 @@
 //! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
-//! cargo xtask test                every check CI runs, with a summary
+//! cargo xtask test [--stage WORD]  every check CI runs (or those named), with a summary
 //! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
 //! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
@@ -50,10 +50,12 @@ commands:
                        the performance table of docs/performance.md: criterion benches
                        with their baselines, the same operations in wasm32 under Node,
                        and the worst frame painting on a 1.7 M-cell map in Chromium
-  test                 cargo test, clippy (native and wasm32), rustfmt, a short fuzz run,
+  test [--stage WORD]...
+                       cargo test, clippy (native and wasm32), rustfmt, the fuzz stage
+                       (every reader of untrusted input for a time budget, fresh seed),
                        a one-hour soak, the wasm tests under Node, the page's build and
                        the browser end-to-end tests (against the dist folder, served under
-                       a sub-path)
+                       a sub-path); --stage runs only the stages whose name has WORD
   fuzz [--seconds N] [--seed S] [--target NAME]...
                        fuzz the readers and the hostile calls in release mode for N s in
                        all (default 300); prints per target the inputs tried, the failures
@@ -127,10 +129,15 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             dist::build(&dir)?;
         }
         "test" => {
-            if !rest.is_empty() {
-                return Err(format!("test: unexpected arguments {rest:?}").into());
+            let mut only = Vec::new();
+            let mut it = rest.iter();
+            while let Some(a) = it.next() {
+                match (a.as_str(), it.next()) {
+                    ("--stage", Some(word)) => only.push(word.clone()),
+                    _ => return Err(format!("test: unexpected arguments {rest:?}").into()),
+                }
             }
-            return Ok(test::run_all());
+            return Ok(test::run_all(&only));
         }
         "bench" => bench::run_all(rest)?,
         "fuzz" => fuzz::fuzz(rest)?,

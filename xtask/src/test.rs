@@ -44,6 +44,11 @@ const STAGES: &[Stage] = &[
         needs_downloads: false,
     },
     Stage {
+        name: "fuzz (every reader of untrusted input, a time budget each)",
+        run: crate::fuzz::test_stage,
+        needs_downloads: false,
+    },
+    Stage {
         name: "soak (1 simulated hour, open_field)",
         run: crate::soak::test_stage,
         needs_downloads: false,
@@ -65,16 +70,33 @@ const STAGES: &[Stage] = &[
     },
 ];
 
-/// Runs every stage and prints the summary.
-pub fn run_all() -> ExitCode {
+/// Runs every stage (or, when `only` names words, the stages whose name contains one of
+/// them: `cargo xtask test --stage fuzz`) and prints the summary.
+pub fn run_all(only: &[String]) -> ExitCode {
     let started = Instant::now();
-    let mut prefetch = Prefetch::start();
+    let stages: Vec<&Stage> = STAGES
+        .iter()
+        .filter(|s| only.is_empty() || only.iter().any(|w| s.name.contains(w.as_str())))
+        .collect();
+    if stages.is_empty() {
+        let names: Vec<&str> = STAGES.iter().map(|s| s.name).collect();
+        eprintln!(
+            "xtask test: no stage matches {only:?} (stages: {})",
+            names.join("; ")
+        );
+        return ExitCode::FAILURE;
+    }
+    // The downloads start in the background only when a stage will use them.
+    let mut prefetch = stages
+        .iter()
+        .any(|s| s.needs_downloads)
+        .then(Prefetch::start);
     let mut results: Vec<(&str, Duration, Result<Option<String>>)> = Vec::new();
-    for (i, stage) in STAGES.iter().enumerate() {
-        if stage.needs_downloads {
-            prefetch.finish();
+    for (i, stage) in stages.iter().enumerate() {
+        if let (true, Some(p)) = (stage.needs_downloads, prefetch.as_mut()) {
+            p.finish();
         }
-        println!("\n==> [{}/{}] {}", i + 1, STAGES.len(), stage.name);
+        println!("\n==> [{}/{}] {}", i + 1, stages.len(), stage.name);
         let t = Instant::now();
         let r = (stage.run)();
         if let Err(e) = &r {

@@ -16,6 +16,19 @@
 //! the fixed fixture inputs), so `rtnav fuzz --seed s --target t --case i` replays a failure
 //! exactly. The run is bounded by time per target ([`Options::per_target`]) or by a number of
 //! cases ([`Options::cases`]).
+//!
+//! **Mutations that reach a text reader's edge early** ([`mutate_text`]): a multi-byte
+//! character (2, 3 or 4 bytes, a byte-order mark, a line separator) inserted or put in place
+//! of a character — half the time where the target's parser stops ([`Target::fail_at`]: for
+//! the JSON readers, serde_json's position of the error), and then often with the input cut
+//! right after it, so the error falls on or just past the character; invalid UTF-8; a
+//! byte-order mark; a very long line; deep nesting. A third of the inputs get one.
+//!
+//! **Kept regression cases** (`fixtures/fuzz-regressions/TARGET/`): every input that once
+//! failed is kept as a file there and replayed first by every run that is given the folder
+//! ([`Options::corpus`]: `rtnav fuzz --corpus`, the fuzz stage of `cargo xtask test`) and by
+//! `cli/tests/fuzz.rs`. A failing input is written out as such a file when the run is given
+//! [`Options::save`] (`rtnav fuzz --save DIR`), ready to be kept.
 
 pub mod components;
 pub mod readers;
@@ -24,7 +37,7 @@ pub mod system;
 use std::cell::{Cell, RefCell};
 use std::fmt::Write as _;
 use std::panic::AssertUnwindSafe;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Once;
 use std::time::{Duration, Instant};
 
@@ -112,6 +125,24 @@ pub trait Target {
     fn run(&mut self, case: &Case) -> Result<(), String>;
     /// The most this input may allocate at once and at its peak \[bytes\].
     fn alloc_bound(&self, case: &Case) -> u64;
+    /// Where in `bytes` (part `part` of an input) the target's parser stops with an error,
+    /// as a byte offset — where a text mutation does the most ([`mutate_text`]); `None`
+    /// where the target cannot tell (the mutation then picks a place at random).
+    fn fail_at(&self, _part: usize, _bytes: &[u8]) -> Option<usize> {
+        None
+    }
+}
+
+/// Where serde_json stops reading `bytes` as JSON, as a byte offset (its line and column,
+/// which counts bytes, turned into one); `None` if the text is JSON.
+pub fn json_fail_at(bytes: &[u8]) -> Option<usize> {
+    let e = serde_json::from_slice::<serde_json::Value>(bytes).err()?;
+    let line_start: usize = bytes
+        .split(|&b| b == b'\n')
+        .take(e.line().saturating_sub(1))
+        .map(|l| l.len() + 1)
+        .sum();
+    Some((line_start + e.column().saturating_sub(1)).min(bytes.len()))
 }
 
 /// How a run is bounded.
@@ -127,6 +158,26 @@ pub struct Options {
     pub only: Vec<String>,
     /// Run only this case of each chosen target (a replay).
     pub replay: Option<u64>,
+    /// The kept regression cases (`fixtures/fuzz-regressions`): each target's are run first.
+    pub corpus: Option<PathBuf>,
+    /// Where each failing input is written, as a regression case to keep.
+    pub save: Option<PathBuf>,
+}
+
+impl Options {
+    /// `seed`, `cases` inputs per target (or `per_target` of time when `None`), every
+    /// target, nothing kept or saved.
+    pub fn new(seed: u64, per_target: Duration, cases: Option<u64>) -> Self {
+        Self {
+            seed,
+            per_target,
+            cases,
+            only: Vec::new(),
+            replay: None,
+            corpus: None,
+            save: None,
+        }
+    }
 }
 
 /// One failed input.
@@ -134,6 +185,10 @@ pub struct Options {
 pub struct Failure {
     /// Its case number (for `--case`).
     pub case: u64,
+    /// The kept regression case it is, if it is one (its file name).
+    pub regression: Option<String>,
+    /// Where the input was written ([`Options::save`]).
+    pub saved: Option<PathBuf>,
     /// `panic`, `slow`, `alloc` or `invariant`.
     pub kind: &'static str,
     /// What happened.
@@ -147,8 +202,10 @@ pub struct Failure {
 pub struct TargetReport {
     /// The target.
     pub name: String,
-    /// Inputs tried.
+    /// Inputs tried (the kept regression cases included).
     pub tried: u64,
+    /// Kept regression cases replayed.
+    pub regressions: u64,
     /// Inputs that failed.
     pub failed: u64,
     /// The first failures (at most 20).
@@ -178,10 +235,11 @@ impl TargetReport {
             String::new()
         };
         format!(
-            "{:<14} {:>7} inputs {:>3} failures  slowest {:>8.2} ms (case {}, {} bytes)  \
+            "{:<14} {:>7} inputs ({} kept) {:>3} failures  slowest {:>8.2} ms (case {}, {} bytes)  \
              largest request {}  peak {}{refusals}",
             self.name,
             self.tried,
+            self.regressions,
             self.failed,
             self.slowest.as_secs_f64() * 1e3,
             self.slowest_case,
@@ -261,7 +319,7 @@ pub fn case_for(target: &dyn Target, seed: u64, case: u64) -> Case {
         // The fixtures themselves come first.
         return seeds[case as usize].clone();
     }
-    if !seeds.is_empty() && rng.chance(0.65) {
+    let mut c = if !seeds.is_empty() && rng.chance(0.65) {
         let mut c = rng.pick(seeds).clone();
         let other = rng.pick(seeds).clone();
         for _ in 0..=rng.below(6) {
@@ -270,7 +328,108 @@ pub fn case_for(target: &dyn Target, seed: u64, case: u64) -> Case {
         c
     } else {
         target.generate(&mut rng)
+    };
+    if rng.chance(0.35) {
+        mutate_text(&mut c, target, &mut rng);
     }
+    c
+}
+
+/// Characters of 2, 3 and 4 bytes in UTF-8 (and a byte-order mark, a line separator, a
+/// combining accent, the replacement character).
+pub const MULTI_BYTE: &[&str] = &[
+    "é", "ü", "ß", "Ω", "\u{301}", "あ", "漢", "\u{feff}", "\u{2028}", "\u{200b}", "\u{fffd}",
+    "😀", "𝕏",
+];
+
+/// Byte sequences that are not UTF-8: a lone continuation byte, a lead byte without its
+/// continuation, an encoded surrogate, an overlong `/`, bytes never used, a code point past
+/// U+10FFFF.
+const NOT_UTF8: &[&[u8]] = &[
+    b"\x80",
+    b"\xc3",
+    b"\xe3\x81",
+    b"\xed\xa0\x80",
+    b"\xc0\xaf",
+    b"\xff",
+    b"\xfe",
+    b"\xf4\x90\x80\x80",
+];
+
+/// What deep nesting repeats: JSON arrays and objects, YAML flow and block collections.
+const NESTS: &[&[u8]] = &[b"[", b"{\"a\":", b"[{\"a\":", b"{a: ", b"- "];
+
+/// One change of the kinds that break text readers ([module documentation](self)): a
+/// multi-byte character where the parser stops (or anywhere), invalid UTF-8, a byte-order
+/// mark, a very long line, deep nesting.
+pub fn mutate_text(c: &mut Case, target: &dyn Target, rng: &mut Rng) {
+    if c.parts.is_empty() {
+        c.parts.push(Vec::new());
+    }
+    let which = rng.index(c.parts.len());
+    let fail = if rng.chance(0.5) {
+        target.fail_at(which, c.part(which))
+    } else {
+        None
+    };
+    let p = &mut c.parts[which];
+    let len = p.len();
+    let at = fail.unwrap_or_else(|| rng.index(len + 1)).min(len);
+    let ch = rng.pick(MULTI_BYTE).as_bytes().to_vec();
+    match rng.below(8) {
+        // A multi-byte character at the place, often with the input cut just after it.
+        0 | 1 => {
+            let end = at + ch.len();
+            p.splice(at..at, ch);
+            if rng.chance(0.5) {
+                p.truncate(end);
+            }
+        }
+        // A multi-byte character in place of the one at the place.
+        2 => {
+            let mut end = (at + 1).min(len);
+            while end < len && (p[end] & 0xc0) == 0x80 {
+                end += 1;
+            }
+            p.splice(at..end, ch);
+        }
+        // Invalid UTF-8.
+        3 => {
+            let bad = rng.pick(NOT_UTF8).to_vec();
+            p.splice(at..at, bad);
+        }
+        // A byte-order mark (at the start, twice, or where the parser stops).
+        4 => {
+            let bom = "\u{feff}".as_bytes();
+            match rng.below(3) {
+                0 => drop(p.splice(0..0, bom.iter().copied())),
+                1 => drop(p.splice(0..0, bom.iter().chain(bom).copied())),
+                _ => drop(p.splice(at..at, bom.iter().copied())),
+            }
+        }
+        // A very long line: one character repeated, no line break.
+        5 => {
+            let unit = if rng.chance(0.5) { ch } else { vec![b'a'] };
+            let times = 1000 + rng.index(60_000);
+            let mut run = Vec::with_capacity(unit.len() * times);
+            for _ in 0..times {
+                run.extend_from_slice(&unit);
+            }
+            p.splice(at..at, run);
+        }
+        // Deep nesting: JSON arrays or objects, YAML flow collections.
+        _ => {
+            let open = rng.pick(NESTS);
+            let deepest = if rng.chance(0.2) { 20_000 } else { 600 };
+            let depth = 64 + rng.index(deepest);
+            let mut run = Vec::with_capacity(open.len() * depth);
+            for _ in 0..depth {
+                run.extend_from_slice(open);
+            }
+            p.splice(at..at, run);
+        }
+    }
+    p.truncate(MAX_LEN);
 }
 
 /// Numbers that break parsers and arithmetic, as text.
@@ -467,6 +626,25 @@ pub fn run_target(target: &mut dyn Target, options: &Options) -> TargetReport {
     };
     let started = Instant::now();
     let refused = REFUSED.with(Cell::get);
+    if let (Some(dir), None) = (&options.corpus, options.replay) {
+        for (name, case) in kept_cases(dir, target.name()) {
+            let (failure, took, usage) = run_case(target, &case);
+            report.tried += 1;
+            report.regressions += 1;
+            note(&mut report, 0, &case, took, usage);
+            if let Some((kind, message)) = failure {
+                report.failed += 1;
+                report.failures.push(Failure {
+                    case: 0,
+                    regression: Some(name),
+                    saved: None,
+                    kind,
+                    message,
+                    input: case.preview(),
+                });
+            }
+        }
+    }
     let mut i = options.replay.unwrap_or(0);
     loop {
         let done = match (options.replay, options.cases) {
@@ -480,18 +658,18 @@ pub fn run_target(target: &mut dyn Target, options: &Options) -> TargetReport {
         let case = case_for(target, options.seed, i);
         let (failure, took, usage) = run_case(target, &case);
         report.tried += 1;
-        if took > report.slowest {
-            report.slowest = took;
-            report.slowest_case = i;
-            report.slowest_len = case.len();
-        }
-        report.largest_request = report.largest_request.max(usage.largest);
-        report.peak = report.peak.max(usage.peak);
+        note(&mut report, i, &case, took, usage);
         if let Some((kind, message)) = failure {
             report.failed += 1;
             if report.failures.len() < 20 {
+                let saved = options
+                    .save
+                    .as_ref()
+                    .and_then(|dir| save_case(dir, target.name(), options.seed, i, &case));
                 report.failures.push(Failure {
                     case: i,
+                    regression: None,
+                    saved,
                     kind,
                     message,
                     input: case.preview(),
@@ -503,6 +681,62 @@ pub fn run_target(target: &mut dyn Target, options: &Options) -> TargetReport {
     report.wall = started.elapsed();
     report.refusals = REFUSED.with(Cell::get) - refused;
     report
+}
+
+/// The slowest input and the allocation figures of `report`, with one more input.
+fn note(report: &mut TargetReport, i: u64, case: &Case, took: Duration, usage: alloc::Usage) {
+    if took > report.slowest {
+        report.slowest = took;
+        report.slowest_case = i;
+        report.slowest_len = case.len();
+    }
+    report.largest_request = report.largest_request.max(usage.largest);
+    report.peak = report.peak.max(usage.peak);
+}
+
+/// The kept regression cases of `target` under `dir` (`dir/TARGET/NAME`, one file an input;
+/// an input of several parts, a ROS map's YAML and image, is `NAME.part0`, `NAME.part1`, …),
+/// by name.
+pub fn kept_cases(dir: &Path, target: &str) -> Vec<(String, Case)> {
+    let mut files: Vec<(String, PathBuf)> = std::fs::read_dir(dir.join(target))
+        .into_iter()
+        .flatten()
+        .filter_map(|e| {
+            let e = e.ok()?;
+            let name = e.file_name().into_string().ok()?;
+            (e.path().is_file() && name != "README.md").then(|| (name, e.path()))
+        })
+        .collect();
+    files.sort();
+    let mut out: Vec<(String, Case)> = Vec::new();
+    for (name, path) in files {
+        let bytes = std::fs::read(&path).unwrap_or_default();
+        match name.rsplit_once(".part") {
+            Some((stem, n)) if n.parse::<usize>().is_ok() => match out.last_mut() {
+                Some((last, case)) if last == stem => case.parts.push(bytes),
+                _ => out.push((stem.to_owned(), Case::one(bytes))),
+            },
+            _ => out.push((name, Case::one(bytes))),
+        }
+    }
+    out
+}
+
+/// Writes `case` (input `i` of `target` under `seed`) under `dir` as a regression case to
+/// keep ([`kept_cases`]); its path, or `None` if it could not be written.
+fn save_case(dir: &Path, target: &str, seed: u64, i: u64, case: &Case) -> Option<PathBuf> {
+    let folder = dir.join(target);
+    std::fs::create_dir_all(&folder).ok()?;
+    let stem = format!("seed{seed}-case{i}");
+    if case.parts.len() == 1 {
+        let path = folder.join(&stem);
+        std::fs::write(&path, case.part(0)).ok()?;
+        return Some(path);
+    }
+    for (n, part) in case.parts.iter().enumerate() {
+        std::fs::write(folder.join(format!("{stem}.part{n}")), part).ok()?;
+    }
+    Some(folder.join(format!("{stem}.part*")))
 }
 
 /// Every target, built from the fixtures under `root` (the project's root) and the shared

@@ -1,7 +1,7 @@
 //! Fuzz targets for every reader of outside text or bytes that does not need a running
 //! system: the rtnav JSON map, the ROS map (YAML + PGM/PNG) and its YAML alone, MovingAI
-//! `.map` and `.scen`, OpenRTM `.conf` (parsed and applied to real configurations), and
-//! scenario JSON.
+//! `.map` and `.scen`, OpenRTM `.conf` (parsed and applied to real configurations),
+//! scenario JSON and replay files.
 //!
 //! **Allocation bounds** (spec §2 Decision 0.2: a reader checks the size it is told before it
 //! allocates): a text reader allocates in proportion to its input —
@@ -18,7 +18,7 @@ use rtnav::components::{DriveControlParams, LocalPathPlanningParams, MotorContro
 use rtnav::map::MAX_CELLS;
 use rtnav::map::formats::{json, movingai, ros};
 use rtnav::rtc::{ConfFile, ConfigAccess, Configuration, ParameterSet};
-use rtnav::system::Scenario;
+use rtnav::system::{Replay, Scenario};
 
 use super::{Bytes, Case, INTERESTING_NUMBERS, Target};
 use crate::rng::Rng;
@@ -121,6 +121,18 @@ pub fn targets(root: &Path, data: Option<&Path>) -> Vec<Box<dyn Target>> {
         .collect();
     files.sort();
     scenario_seeds.extend(files.iter().filter_map(|p| read(p)).map(Case::one));
+    let mut replay_files: Vec<_> = std::fs::read_dir(fixtures.join("replays"))
+        .into_iter()
+        .flatten()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.to_string_lossy().ends_with(".rtnav.json"))
+        .collect();
+    replay_files.sort();
+    let replay_seeds = replay_files
+        .iter()
+        .filter_map(|p| read(p))
+        .map(Case::one)
+        .collect();
     vec![
         Box::new(JsonMap { seeds: json_seeds }),
         Box::new(RosMap {
@@ -133,6 +145,9 @@ pub fn targets(root: &Path, data: Option<&Path>) -> Vec<Box<dyn Target>> {
         Box::new(Conf { seeds: conf_seeds }),
         Box::new(ScenarioJson {
             seeds: scenario_seeds,
+        }),
+        Box::new(ReplayJson {
+            seeds: replay_seeds,
         }),
     ]
 }
@@ -231,6 +246,10 @@ impl Target for JsonMap {
     fn alloc_bound(&self, case: &Case) -> u64 {
         // The read-back doubles what a valid map allocates.
         2 * text_bound(case)
+    }
+
+    fn fail_at(&self, _part: usize, bytes: &[u8]) -> Option<usize> {
+        super::json_fail_at(bytes)
     }
 }
 
@@ -564,7 +583,9 @@ impl Target for MovingaiScen {
         if let Ok(problems) = movingai::load_scen(&case.text(0)) {
             for p in problems {
                 // Checked on reading: the cells are inside the map size given.
-                let (s, g) = (p.start_cell(), p.goal_cell());
+                let (Ok(s), Ok(g)) = (p.start_cell(), p.goal_cell()) else {
+                    return Err(format!("a problem read lies outside its map: {p:?}"));
+                };
                 if s.0 >= p.map_width || g.1 >= p.map_height {
                     return Err(format!("problem outside its map: {p:?}"));
                 }
@@ -739,5 +760,97 @@ impl Target for ScenarioJson {
 
     fn alloc_bound(&self, case: &Case) -> u64 {
         2 * text_bound(case)
+    }
+
+    fn fail_at(&self, _part: usize, bytes: &[u8]) -> Option<usize> {
+        super::json_fail_at(bytes)
+    }
+}
+
+// ------------------------------------------------------------------ replay files
+
+struct ReplayJson {
+    seeds: Vec<Case>,
+}
+
+impl Target for ReplayJson {
+    fn name(&self) -> &'static str {
+        "replay"
+    }
+
+    fn seeds(&self) -> &[Case] {
+        &self.seeds
+    }
+
+    fn generate(&self, rng: &mut Rng) -> Case {
+        let n = |rng: &mut Rng| {
+            let s = rng.pick(INTERESTING_NUMBERS).to_string();
+            if s.parse::<u64>().is_ok() {
+                s
+            } else {
+                "7".to_owned()
+            }
+        };
+        let inputs: Vec<String> = (0..rng.below(5))
+            .map(|_| {
+                let input = match rng.below(4) {
+                    0 => r#"{"type": "activate_all"}"#.to_owned(),
+                    1 => format!(
+                        r#"{{"type": "set_param", "component": "{}", "name": "dmin", "value": {}}}"#,
+                        rng.pick(&["LocalPathPlanning", "Nobody", "é"]),
+                        n(rng)
+                    ),
+                    2 => r#"{"type": "inject_input", "component": "MotorControl", "port": "TargetVelocity", "data": [0, 1]}"#.to_owned(),
+                    _ => r##"{"type": "load_conf", "text": "# [LocalPathPlanning0]\nconf.default.dmin: 0.7\n"}"##.to_owned(),
+                };
+                let exact = if rng.chance(0.2) {
+                    format!(r#", "exact": {{"{}": "{}"}}"#, rng.below(3), rng.pick(&["0x7ff8000000000000", "0x3ff0000000000000", "x", "0x"]))
+                } else {
+                    String::new()
+                };
+                format!(r#"{{"t_ns": {}, "input": {input}{exact}}}"#, n(rng))
+            })
+            .collect();
+        let hash = |rng: &mut Rng| match rng.below(4) {
+            0 => "ab".to_owned(),
+            1 => "é".repeat(32),
+            _ => "0123456789abcdef".repeat(4),
+        };
+        Case::one(format!(
+            r#"{{"format": "rtnav-replay", "version": {}, "scenario_hash": "{}", "behaviour": {},
+            "setup": {{"v": 1, "scenario": "{}", "start": null, "goal": [1, 2, {}], "backward": false, "edits": [], "params": {{}}}},
+            "inputs": [{}], "end_ns": {}, "samples": {}, "trace_hash": "{}"}}"#,
+            rng.pick(&["2", "1", "3", "\"2\""]),
+            hash(rng),
+            rng.pick(&["1", "0", "4294967296"]),
+            rng.pick(&["open_field", "", "é"]),
+            n(rng),
+            inputs.join(","),
+            n(rng),
+            n(rng),
+            hash(rng),
+        ))
+    }
+
+    fn run(&mut self, case: &Case) -> Result<(), String> {
+        let text = case.text(0);
+        if let Ok(r) = Replay::from_json(&text) {
+            let back = Replay::from_json(&r.to_json().map_err(|e| e.to_string())?)
+                .map_err(|e| format!("a replay read could not be read back: {e}"))?;
+            if back.to_json().ok() != r.to_json().ok() {
+                return Err("a replay read back differs".to_owned());
+            }
+        }
+        let _ = Replay::scenario_of(&text);
+        Ok(())
+    }
+
+    fn alloc_bound(&self, case: &Case) -> u64 {
+        // Read, written and read back.
+        4 * text_bound(case)
+    }
+
+    fn fail_at(&self, _part: usize, bytes: &[u8]) -> Option<usize> {
+        super::json_fail_at(bytes)
     }
 }

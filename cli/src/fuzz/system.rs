@@ -107,6 +107,9 @@ pub fn targets(root: &Path) -> Vec<Box<dyn Target>> {
     if let Some(t) = Tokens::new(root) {
         v.push(Box::new(t));
     }
+    if let Some(t) = Tokens::plain(root) {
+        v.push(Box::new(t));
+    }
     v
 }
 
@@ -681,9 +684,14 @@ impl Target for Bundle {
 /// The limit `Session::decode_token` inflates to \[bytes\].
 const INFLATE_LIMIT: u64 = TOKEN_INFLATE_LIMIT as u64;
 
+/// Share links: the token as pasted (`share-token`), or the set-up's JSON that a token
+/// carries, deflated and encoded by the target (`share-json`: mutations then reach the JSON
+/// reader behind the link, as a link made by hand does).
 struct Tokens {
     session: Session,
     seeds: Vec<Case>,
+    /// The inputs are the JSON a token carries, not tokens.
+    plain: bool,
 }
 
 impl Tokens {
@@ -706,17 +714,54 @@ impl Tokens {
             .set_param_text(ComponentKind::LocalPathPlanning, "dmin", "0.7")
             .ok()?;
         seeds.push(Case::one(session.share_token().ok()?));
-        Some(Self { session, seeds })
+        Some(Self {
+            session,
+            seeds,
+            plain: false,
+        })
+    }
+
+    /// The same session, its inputs the set-ups' JSON.
+    fn plain(root: &Path) -> Option<Self> {
+        let mut t = Self::new(root)?;
+        t.plain = true;
+        t.seeds = t
+            .seeds
+            .iter()
+            .filter_map(|c| {
+                let bytes = URL_SAFE_NO_PAD.decode(c.part(0)).ok()?;
+                miniz_oxide::inflate::decompress_to_vec(&bytes).ok()
+            })
+            .map(Case::one)
+            .collect();
+        Some(t)
+    }
+
+    /// The token of input `case`.
+    fn token(&self, case: &Case) -> String {
+        if self.plain {
+            token_of(case.part(0))
+        } else {
+            case.text(0)
+        }
     }
 }
 
-fn token_of(json: &str) -> String {
-    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 6))
+fn token_of(json: &[u8]) -> String {
+    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(json, 6))
 }
 
 impl Target for Tokens {
     fn name(&self) -> &'static str {
-        "share-token"
+        if self.plain {
+            "share-json"
+        } else {
+            "share-token"
+        }
+    }
+
+    fn fail_at(&self, _part: usize, bytes: &[u8]) -> Option<usize> {
+        self.plain.then(|| super::json_fail_at(bytes)).flatten()
     }
 
     fn seeds(&self) -> &[Case] {
@@ -732,8 +777,8 @@ impl Target for Tokens {
                 "3".to_owned()
             }
         };
-        let json = match rng.below(4) {
-            0 => {
+        let json = match (self.plain, rng.below(4)) {
+            (false, 0) => {
                 // Over the inflate limit: whitespace deflates to almost nothing.
                 let mut j = String::from("{\"v\":1,\"scenario\":\"open_field\"");
                 j.push_str(&" ".repeat(INFLATE_LIMIT as usize + 1));
@@ -766,11 +811,15 @@ impl Target for Tokens {
                 )
             }
         };
-        Case::one(token_of(&json))
+        if self.plain {
+            Case::one(json)
+        } else {
+            Case::one(token_of(json.as_bytes()))
+        }
     }
 
     fn run(&mut self, case: &Case) -> Result<(), String> {
-        let token = case.text(0);
+        let token = self.token(case);
         if Session::decode_token(&token).is_err() {
             return Ok(());
         }
@@ -797,17 +846,21 @@ impl Target for Tokens {
         // A token that does not inflate within the reader's own limit, or is not a set-up,
         // costs its inflated bytes (the output grows by doubling) and nothing more; one that
         // is a set-up is parsed and a system rebuilt from it.
-        let base = (1 << 20) + 64 * case.len() as u64;
+        let token = self.token(case);
+        let base = (1 << 20) + 64 * token.len() as u64 + 8 * case.len() as u64;
         let inflated = URL_SAFE_NO_PAD
-            .decode(case.part(0).trim_ascii())
+            .decode(token.as_bytes().trim_ascii())
             .ok()
             .and_then(|b| {
                 miniz_oxide::inflate::decompress_to_vec_with_limit(&b, INFLATE_LIMIT as usize).ok()
             });
+        // The reader skips a byte-order mark before the JSON, as every text reader does.
+        let set_up = |json: &[u8]| {
+            let body = json.strip_prefix("\u{feff}".as_bytes()).unwrap_or(json);
+            serde_json::from_slice::<Setup>(body).is_ok()
+        };
         match inflated {
-            Some(json) if serde_json::from_slice::<Setup>(&json).is_ok() => {
-                (64 << 20) + base + 8 * json.len() as u64
-            }
+            Some(json) if set_up(&json) => (64 << 20) + base + 8 * json.len() as u64,
             Some(json) => base + 4 * json.len() as u64,
             None => base + 2 * INFLATE_LIMIT,
         }

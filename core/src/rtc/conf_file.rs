@@ -15,6 +15,7 @@
 use core::fmt;
 
 use crate::errors::ConfigError;
+use crate::present::excerpt;
 
 /// What a `.conf` key refers to.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -96,7 +97,7 @@ impl ConfFile {
             }
             let syntax = |reason: &str| ConfigError::Syntax {
                 line,
-                text: raw.to_owned(),
+                text: excerpt(raw),
                 reason: reason.to_owned(),
             };
             let sep = t
@@ -108,7 +109,7 @@ impl ConfFile {
                 return Err(syntax("empty key"));
             }
             let key = Self::key(key).ok_or_else(|| ConfigError::UnknownParameter {
-                name: key.to_owned(),
+                name: excerpt(key),
                 line: Some(line),
             })?;
             entries.push(ConfEntry { line, key, value });

@@ -16,6 +16,7 @@ use serde::{Deserialize, Serialize};
 
 use super::conf_file::{ConfFile, ConfKey};
 use crate::errors::ConfigError;
+use crate::present::excerpt;
 
 /// When a changed value reaches the component (000/002 §4.2 "反映タイミング").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -122,7 +123,7 @@ impl ParamSpec {
         let t = text.trim();
         let bad = || ConfigError::BadValue {
             name: self.name.to_owned(),
-            value: t.to_owned(),
+            value: excerpt(t),
             kind: self.kind.name(),
             line,
         };
@@ -326,7 +327,7 @@ impl<P: ParameterSet> Configuration<P> {
             .iter()
             .position(|s| s.name == name)
             .ok_or_else(|| ConfigError::UnknownParameter {
-                name: name.to_owned(),
+                name: excerpt(name),
                 line,
             })
     }
@@ -450,7 +451,7 @@ impl<P: ParameterSet> ConfigAccess for Configuration<P> {
             .get(name)
             .cloned()
             .ok_or_else(|| ConfigError::UnknownSet {
-                name: name.to_owned(),
+                name: excerpt(name),
             })?;
         self.active_set = name.to_owned();
         self.request(values);
@@ -466,7 +467,7 @@ impl<P: ParameterSet> ConfigAccess for Configuration<P> {
             // An unknown parameter is named by the whole key, as written in the file.
             let index = |name: &str| {
                 Self::index(name, Some(e.line)).map_err(|_| ConfigError::UnknownParameter {
-                    name: e.key.to_string(),
+                    name: excerpt(&e.key.to_string()),
                     line: Some(e.line),
                 })
             };

@@ -265,7 +265,7 @@ impl Comparison {
                 format!("{} local, {} global", r.replans, r.global_plans)
             }),
             row("energy Σ|τ·ω|·Δt", &|r| num(r.energy_j, "J", 2)),
-            row("trace hash", &|r| r.trace_hash[..16].to_owned()),
+            row("trace hash", &|r| r.trace_hash.chars().take(16).collect()),
         ]
     }
 }

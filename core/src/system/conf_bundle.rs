@@ -268,7 +268,7 @@ impl Wiring {
                     .filter(|&k| self.config(k).is_ok())
                     .ok_or_else(|| ConfBundleError::ConfUnknownComponent {
                         line,
-                        name: name.to_owned(),
+                        name: crate::present::excerpt(name),
                         expected: self
                             .configured_components()
                             .iter()
@@ -290,7 +290,7 @@ impl Wiring {
                 if !(t.is_empty() || t.starts_with('#') || t.starts_with('!')) {
                     return Err(ConfBundleError::ConfOutsideBlock {
                         line,
-                        text: raw.to_owned(),
+                        text: crate::present::excerpt(raw),
                     }
                     .into());
                 }

@@ -100,6 +100,20 @@ pub enum SystemError {
     /// A telemetry history of capacity zero.
     #[error("telemetry capacity must be at least 1")]
     ZeroCapacity,
+    /// A run asked to go on for longer than any run goes ([`MAX_REPLAY_NS`](crate::system::MAX_REPLAY_NS),
+    /// 24 h of simulated time): an absurd count of ticks or seconds is refused, not run.
+    #[error(
+        "{what} asks for {seconds} s of simulated time, more than the {limit_s} s (24 h) a run \
+         goes at most"
+    )]
+    RunTooLong {
+        /// The call and its argument, e.g. `run_for seconds`.
+        what: &'static str,
+        /// The simulated time asked for \[s\].
+        seconds: f64,
+        /// The most a run goes \[s\].
+        limit_s: u64,
+    },
     /// A configuration that gives the two planners different `dmin`s (spec §3 Decision 0.2:
     /// one value for the system).
     #[error(
@@ -156,6 +170,34 @@ pub enum SessionError {
     BadReplay {
         /// Why.
         reason: String,
+    },
+    /// A replay of a scenario whose content has changed since the replay was recorded (its
+    /// file or its map's files): the run would be judged against something else, so it is
+    /// refused (spec §6, Decision 0.3).
+    #[error(
+        "replay: scenario `{scenario}` has changed since the replay was recorded (content \
+         hash recorded {recorded}, this scenario's is {found})"
+    )]
+    ReplayScenarioChanged {
+        /// The scenario's name.
+        scenario: String,
+        /// The content hash the replay recorded.
+        recorded: String,
+        /// The content hash of the scenario loaded.
+        found: String,
+    },
+    /// A replay recorded by a build of another behaviour version
+    /// ([`BEHAVIOUR_VERSION`](crate::BEHAVIOUR_VERSION)): its runs differ from this build's,
+    /// so it is refused rather than re-judged (spec §6, Decision 0.3).
+    #[error(
+        "replay: recorded by behaviour version {recorded} of the core; this build is \
+         behaviour version {this_build}, whose runs differ"
+    )]
+    ReplayBehaviourChanged {
+        /// The behaviour version the replay recorded.
+        recorded: u32,
+        /// This build's.
+        this_build: u32,
     },
     /// A clock speed outside the range offered.
     #[error("speed {speed}× is outside {min}× to {max}×")]

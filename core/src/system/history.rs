@@ -320,10 +320,12 @@ impl History {
     }
 
     /// The run up to `system`'s time as a replay (the requests recorded after it are left
-    /// out).
-    pub fn replay(&self, system: &System) -> Replay {
+    /// out), made on the scenario of content hash `scenario_hash` by this build.
+    pub fn replay(&self, system: &System, scenario_hash: &str) -> Replay {
         let telemetry = system.record().telemetry();
         Replay {
+            scenario_hash: scenario_hash.to_owned(),
+            behaviour: crate::BEHAVIOUR_VERSION,
             setup: self.setup.clone(),
             inputs: self.inputs[..self.next].to_vec(),
             end_ns: system.time_ns(),

@@ -3,9 +3,17 @@
 //! terse message about a number it cannot read gets a hint a person can act on. JSON has no
 //! `NaN` or `Infinity` (serde_json says only "expected value"), and a number beyond `f64`'s
 //! range (`1e400`) is refused as "number out of range".
+//!
+//! The text is a person's (a file, a pasted link): whatever it holds, the answer is a value or
+//! a message, never a panic, and the message is short — serde_json quotes what it could not
+//! use (an unknown key, a string where a number belongs) in full, so each quotation is cut to
+//! an excerpt and the whole message bounded ([`crate::present::with_short_quotes`]).
+//! serde_json's column counts bytes: it is only ever used through
+//! [`floor_char_boundary`](crate::present::floor_char_boundary).
 
 use serde::de::DeserializeOwned;
 
+use crate::present::{floor_char_boundary, with_short_quotes};
 use crate::rtc::without_bom;
 
 /// `text` (after a leading byte order mark) read as `T`; the error is serde_json's message,
@@ -17,7 +25,12 @@ pub(super) fn parse<T: DeserializeOwned>(text: &str) -> Result<T, String> {
 
 /// serde_json's message for `e`, met in `text`, with a hint when a number is the problem.
 fn explain(text: &str, e: &serde_json::Error) -> String {
-    let message = e.to_string();
+    let full = e.to_string();
+    let position = format!(" at line {} column {}", e.line(), e.column());
+    let message = match full.strip_suffix(&position) {
+        Some(inner) => format!("{}{position}", with_short_quotes(inner)),
+        None => with_short_quotes(&full),
+    };
     let hint = if message.starts_with("number out of range") {
         Some("a JSON number must fit a 64-bit float (magnitude below about 1.8e308)")
     } else if not_a_number_at(text, e.line(), e.column()) {
@@ -39,7 +52,7 @@ fn not_a_number_at(text: &str, line: usize, column: usize) -> bool {
     };
     // serde_json's column counts bytes and points at (or just past) the character it could
     // not read: look from the start of the word around it.
-    let at = column.saturating_sub(1).min(row.len());
+    let at = floor_char_boundary(row, column.saturating_sub(1));
     let start = row[..at]
         .char_indices()
         .rev()
@@ -59,6 +72,7 @@ mod tests {
     use std::collections::BTreeMap;
 
     use super::*;
+    use crate::present::MAX_MESSAGE_CHARS;
 
     fn error(text: &str) -> String {
         parse::<BTreeMap<String, f64>>(text).unwrap_err()
@@ -91,6 +105,49 @@ mod tests {
             "invalid type: boolean `true`, expected f64 at line 1 column 10"
         );
         assert!(!error(r#"{"x": }"#).contains("NaN"));
+    }
+
+    #[test]
+    fn errors_after_multi_byte_characters_are_messages_not_panics() {
+        // serde_json's column counts bytes: each of these stops inside or just after a
+        // character of two, three or four bytes.
+        for text in [
+            "\"é",
+            "\"あ",
+            "\"😀",
+            "{\"x\": é}",
+            "{\"x\": 1é}",
+            "{\"x\": nulé}",
+            "{\"é\": NaNé}",
+            "é",
+            "\u{feff}\"\u{feff}",
+            "{\"x\":\n  \"ü",
+        ] {
+            let e = error(text);
+            assert!(!e.is_empty(), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn what_serde_json_quotes_is_cut_to_an_excerpt() {
+        #[derive(Debug, serde::Deserialize)]
+        #[serde(deny_unknown_fields)]
+        #[allow(dead_code)]
+        struct Small {
+            x: f64,
+        }
+        let key = "ключ".repeat(10_000);
+        let e = parse::<Small>(&format!("{{\"{key}\": 1}}")).unwrap_err();
+        assert!(
+            e.chars().count() <= MAX_MESSAGE_CHARS + 40,
+            "{} chars",
+            e.len()
+        );
+        assert!(
+            e.starts_with("unknown field `ключключ") && e.contains("…`"),
+            "{e}"
+        );
+        assert!(e.contains(" at line 1 column "), "{e}");
     }
 
     #[test]

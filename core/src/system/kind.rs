@@ -96,7 +96,7 @@ impl ComponentKind {
             .into_iter()
             .find(|k| k.name() == name || k.instance_name() == name)
             .ok_or_else(|| SystemError::UnknownComponent {
-                name: name.to_owned(),
+                name: crate::present::excerpt(name),
                 expected: Self::ALL.map(Self::name).join(", "),
             })
     }

@@ -70,6 +70,7 @@
 mod activity;
 mod compare;
 mod conf_bundle;
+mod content_hash;
 mod error;
 mod events;
 mod exercise;

@@ -7,7 +7,8 @@
 //! The file is versioned JSON (`*.rtnav.json`):
 //!
 //! ```json
-//! { "format": "rtnav-replay", "version": 1,
+//! { "format": "rtnav-replay", "version": 2,
+//!   "scenario_hash": "5be1…", "behaviour": 1,
 //!   "setup": { "v": 1, "scenario": "open_field", "start": null, "goal": null,
 //!              "backward": false, "edits": [], "params": {} },
 //!   "inputs": [ { "t_ns": 1200000000, "input": { "type": "activate_all" } },
@@ -22,6 +23,14 @@
 //! port sample may carry: every non-finite number of an input is written as `0` and listed
 //! in the entry's `"exact"` by its position among the input's numbers, as its IEEE 754 bits in
 //! hexadecimal (`{"0": "0x7ff8000000000000"}`), so a replay reproduces even a NaN's payload.
+//!
+//! **Hand-ins stay valid** (spec §6, Decision 0.3). A replay carries the content hash of the
+//! scenario it was made on ([`Scenario::content_hash`](super::Scenario::content_hash): the
+//! scenario and its map files) and the core's [`BEHAVIOUR_VERSION`]; loading it on a scenario
+//! whose content has changed, or in a build of another behaviour version, is refused with
+//! that reason ([`SessionError::ReplayScenarioChanged`], [`SessionError::ReplayBehaviourChanged`])
+//! — never re-judged silently. A file of version 1 carried neither and is refused for its
+//! version.
 
 use std::collections::BTreeMap;
 
@@ -31,12 +40,15 @@ use super::input::Input;
 use super::json_text;
 use super::run_limit::beyond_replay_limit;
 use super::setup::{SETUP_VERSION, Setup};
+use crate::BEHAVIOUR_VERSION;
 use crate::errors::SessionError;
+use crate::present::excerpt;
 
 /// The `format` of a replay file.
 pub const REPLAY_FORMAT: &str = "rtnav-replay";
-/// The version this build writes and reads.
-pub const REPLAY_VERSION: u32 = 1;
+/// The version this build writes and reads (2: the scenario's content hash and the
+/// behaviour version recorded).
+pub const REPLAY_VERSION: u32 = 2;
 /// The largest replay file read \[bytes\] (a recorded hour of steady editing is far less).
 pub const MAX_REPLAY_BYTES: usize = 32 << 20;
 /// One request and the simulated time it was made at.
@@ -51,6 +63,11 @@ pub struct TimedInput {
 /// A recorded run (module documentation).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Replay {
+    /// The content hash of the scenario the run was made on
+    /// ([`Scenario::content_hash`](super::Scenario::content_hash), 64 hex digits).
+    pub scenario_hash: String,
+    /// The core's behaviour version that made the run ([`BEHAVIOUR_VERSION`]).
+    pub behaviour: u32,
     /// The set-up the run started from.
     pub setup: Setup,
     /// Every request carried out, in the order made (times never decrease).
@@ -78,6 +95,8 @@ struct Entry {
 struct File {
     format: String,
     version: u32,
+    scenario_hash: String,
+    behaviour: u32,
     setup: Setup,
     inputs: Vec<Entry>,
     end_ns: u64,
@@ -165,7 +184,7 @@ impl Entry {
             let bits = text
                 .strip_prefix("0x")
                 .and_then(|h| u64::from_str_radix(h, 16).ok())
-                .ok_or_else(|| at(&format!("`{text}` is not 0x and 16 hex digits")))?;
+                .ok_or_else(|| at(&format!("`{}` is not 0x and 16 hex digits", excerpt(&text))))?;
             let value = f64::from_bits(bits);
             if value.is_finite() {
                 return Err(at(&format!(
@@ -184,6 +203,8 @@ impl Replay {
         let file = File {
             format: REPLAY_FORMAT.to_owned(),
             version: REPLAY_VERSION,
+            scenario_hash: self.scenario_hash.clone(),
+            behaviour: self.behaviour,
             setup: self.setup.clone(),
             inputs: self.inputs.iter().map(Entry::of).collect(),
             end_ns: self.end_ns,
@@ -211,7 +232,7 @@ impl Replay {
             other => {
                 return Err(bad(format!(
                     "not an rtnav replay (`format` is {}, expected \"{REPLAY_FORMAT}\")",
-                    other.map_or("missing".to_owned(), |v| v.to_string())
+                    other.map_or("missing".to_owned(), |v| excerpt(&v.to_string()))
                 )));
             }
         }
@@ -221,7 +242,7 @@ impl Replay {
             other => {
                 return Err(bad(format!(
                     "version {} (this build reads version {REPLAY_VERSION})",
-                    other.map_or("missing".to_owned(), |v| v.to_string())
+                    other.map_or("missing".to_owned(), |v| excerpt(&v.to_string()))
                 )));
             }
         }
@@ -236,11 +257,16 @@ impl Replay {
         if poses.flatten().any(|v| !v.is_finite()) {
             return Err(bad("a pose of the set-up is not finite"));
         }
-        if file.trace_hash.len() != 64 || !file.trace_hash.bytes().all(|b| b.is_ascii_hexdigit()) {
-            return Err(bad(format!(
-                "trace hash `{}` is not 64 hex digits",
-                file.trace_hash
-            )));
+        for (what, hash) in [
+            ("trace hash", &file.trace_hash),
+            ("scenario hash", &file.scenario_hash),
+        ] {
+            if hash.len() != 64 || !hash.bytes().all(|b| b.is_ascii_hexdigit()) {
+                return Err(bad(format!(
+                    "{what} `{}` is not 64 hex digits",
+                    excerpt(hash)
+                )));
+            }
         }
         if let Some(reason) = beyond_replay_limit(&format!("end_ns {}", file.end_ns), file.end_ns) {
             return Err(bad(reason));
@@ -264,6 +290,8 @@ impl Replay {
             inputs.push(entry.into_timed(i)?);
         }
         Ok(Self {
+            scenario_hash: file.scenario_hash,
+            behaviour: file.behaviour,
             setup: file.setup,
             inputs,
             end_ns: file.end_ns,
@@ -275,6 +303,28 @@ impl Replay {
     /// The scenario a replay file was made on (the page loads it first), the file checked.
     pub fn scenario_of(text: &str) -> crate::Result<String> {
         Ok(Self::from_json(text)?.setup.scenario)
+    }
+
+    /// Whether this replay can be replayed on a scenario of content hash `scenario_hash` by
+    /// this build: refused if it was recorded by another behaviour version, or on a scenario
+    /// whose content has changed since, with the reason (spec §6, Decision 0.3).
+    pub fn check_valid_for(&self, scenario_hash: &str) -> crate::Result<()> {
+        if self.behaviour != BEHAVIOUR_VERSION {
+            return Err(SessionError::ReplayBehaviourChanged {
+                recorded: self.behaviour,
+                this_build: BEHAVIOUR_VERSION,
+            }
+            .into());
+        }
+        if self.scenario_hash != scenario_hash {
+            return Err(SessionError::ReplayScenarioChanged {
+                scenario: excerpt(&self.setup.scenario),
+                recorded: self.scenario_hash.clone(),
+                found: scenario_hash.to_owned(),
+            }
+            .into());
+        }
+        Ok(())
     }
 }
 
@@ -320,6 +370,8 @@ mod tests {
             },
         ];
         Replay {
+            scenario_hash: "a".repeat(64),
+            behaviour: BEHAVIOUR_VERSION,
             setup,
             inputs,
             end_ns: 9,
@@ -355,9 +407,14 @@ mod tests {
     fn other_versions_and_malformed_files_are_refused_with_a_reason() {
         let text = sample().to_json().unwrap();
         let refuse = |t: &str| Replay::from_json(t).unwrap_err().to_string();
-        let e = refuse(&text.replace("\"version\":1", "\"version\":2"));
+        let e = refuse(&text.replace("\"version\":2", "\"version\":1"));
         assert!(
-            e.contains("version 2") && e.contains("reads version 1"),
+            e.contains("version 1") && e.contains("reads version 2"),
+            "{e}"
+        );
+        let e = refuse(&text.replace(&"a".repeat(64), "abc"));
+        assert!(
+            e.contains("scenario hash `abc` is not 64 hex digits"),
             "{e}"
         );
         let e = refuse(&text.replace("rtnav-replay", "something"));
@@ -373,6 +430,33 @@ mod tests {
         assert!(e.contains("is finite"), "{e}");
         let e = refuse(&text.replace("\"t_ns\":7", "\"t_ns\":7e999"));
         assert!(e.contains("(a JSON number must fit a 64-bit float"), "{e}");
+    }
+
+    #[test]
+    fn a_replay_of_another_behaviour_or_a_changed_scenario_is_refused_with_which() {
+        let mut r = sample();
+        let same = "a".repeat(64);
+        assert!(r.check_valid_for(&same).is_ok());
+        let e = r.check_valid_for(&"b".repeat(64)).unwrap_err();
+        assert!(
+            matches!(&e, crate::Error::Session(SessionError::ReplayScenarioChanged { scenario, recorded, found })
+                if scenario == "open_field" && *recorded == same && *found == "b".repeat(64)),
+            "{e:?}"
+        );
+        assert!(
+            e.to_string().contains("scenario `open_field` has changed"),
+            "{e}"
+        );
+        r.behaviour = BEHAVIOUR_VERSION + 1;
+        let e = r.check_valid_for(&same).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "replay: recorded by behaviour version {} of the core; this build is behaviour \
+                 version {BEHAVIOUR_VERSION}, whose runs differ",
+                BEHAVIOUR_VERSION + 1
+            )
+        );
     }
 
     #[test]

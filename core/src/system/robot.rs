@@ -14,6 +14,7 @@ use super::kind::ComponentKind;
 use super::mission::Mission;
 use super::rates::Rates;
 use super::record::{Record, RunStats};
+use super::run_limit::check_run_length;
 use super::status::{ComponentInfo, Status, SystemState};
 use super::wiring::{Report, Wiring};
 use crate::errors::LocalPathError;
@@ -282,11 +283,14 @@ impl System {
                 non_negative: true,
             });
         }
+        check_run_length(what, seconds)?;
         let base = self.wiring.execution_context().base_period_ns();
         Ok((seconds * 1e9 / base as f64) as u64)
     }
 
-    /// Runs for `seconds` of simulated time (rounded down to whole base ticks).
+    /// Runs for `seconds` of simulated time (rounded down to whole base ticks); more than a
+    /// run goes ([`MAX_REPLAY_NS`](super::MAX_REPLAY_NS), 24 h) is refused
+    /// ([`SystemError::RunTooLong`]).
     pub fn run_for(&mut self, seconds: f64) -> crate::Result<()> {
         let ticks = self.ticks_in(seconds, "run_for seconds")?;
         self.step(ticks);
@@ -294,7 +298,8 @@ impl System {
     }
 
     /// Runs until `stop(self)` is true (checked after every tick) or `max_seconds` of
-    /// simulated time have passed. Returns whether `stop` said so.
+    /// simulated time have passed (at most 24 h, as [`System::run_for`]). Returns whether
+    /// `stop` said so.
     pub fn run_until(
         &mut self,
         max_seconds: f64,

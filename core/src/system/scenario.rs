@@ -443,7 +443,7 @@ impl Scenario {
 
     fn err(&self, reason: impl Into<String>) -> ScenarioError {
         ScenarioError::Scenario {
-            scenario: self.name.clone(),
+            scenario: crate::present::excerpt(&self.name),
             reason: reason.into(),
         }
     }

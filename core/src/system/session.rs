@@ -84,10 +84,12 @@ const DRAWN: BuildOptions = BuildOptions { full_field: true };
 enum Source {
     /// Nothing loaded yet.
     Empty,
-    /// A scenario, with the files it names (kept to replay set-ups).
+    /// A scenario, with the files it names (kept to replay set-ups) and its content hash
+    /// (what a replay records of it).
     Scenario {
         scenario: Box<Scenario>,
         files: MemoryResolver,
+        content_hash: String,
     },
     /// A map file the user picked.
     MapFile,
@@ -316,6 +318,7 @@ impl Session {
             files.insert(&path, bytes);
         }
         let system = setup::build(&scenario, &files, &Setup::of(&scenario), DRAWN)?;
+        let content_hash = scenario.content_hash(&files)?;
         self.map_name = match &scenario.map {
             MapSource::Json { path } | MapSource::Movingai { path, .. } => path.clone(),
             MapSource::Ros { yaml, .. } => yaml.clone(),
@@ -326,6 +329,7 @@ impl Session {
             Source::Scenario {
                 scenario: Box::new(scenario),
                 files,
+                content_hash,
             },
         );
         Ok(())
@@ -472,7 +476,10 @@ impl Session {
     /// Rebuilds the scenario loaded with `setup` replayed ([`setup::build`]). On an error
     /// nothing changes.
     pub fn restart_setup(&mut self, setup: &Setup) -> crate::Result<()> {
-        let Source::Scenario { scenario, files } = &self.source else {
+        let Source::Scenario {
+            scenario, files, ..
+        } = &self.source
+        else {
             return Err(bad_token("no scenario is loaded to replay the set-up on"));
         };
         if scenario.name != setup.scenario {

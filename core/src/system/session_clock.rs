@@ -53,15 +53,17 @@ impl Session {
         self.clock.pending_ns as f64 * 1e-9
     }
 
-    /// Runs `ticks` base ticks now, paused or not (single step).
-    pub fn step_ticks(&mut self, ticks: u64) {
+    /// Runs `ticks` base ticks now, paused or not (single step). More ticks than a run goes
+    /// (24 h of simulated time) are refused ([`SystemError::RunTooLong`](crate::errors::SystemError::RunTooLong)),
+    /// and nothing runs.
+    pub fn step_ticks(&mut self, ticks: u64) -> crate::Result<()> {
         let base = self.system.wiring().execution_context().base_period_ns();
-        let target = self
-            .system
-            .time_ns()
-            .saturating_add(ticks.saturating_mul(base));
+        let asked = ticks.saturating_mul(base);
+        super::super::run_limit::check_run_length("step_ticks", asked as f64 * 1e-9)?;
+        let target = self.system.time_ns().saturating_add(asked);
         self.run_to(target);
         self.look();
+        Ok(())
     }
 
     /// Runs to simulated time `target_ns` (a whole number of base ticks; later if a request
@@ -70,8 +72,12 @@ impl Session {
     pub(super) fn run_to(&mut self, target_ns: u64) {
         let base = self.system.wiring().execution_context().base_period_ns();
         loop {
-            let now = self.system.time_ns();
-            while let Some(input) = self.history.as_mut().and_then(|h| h.take_due(now)) {
+            // Each request due now, "now" read again after each: a request that plans runs
+            // ticks, and the next one was recorded at the time that left.
+            while let Some(input) = {
+                let now = self.system.time_ns();
+                self.history.as_mut().and_then(|h| h.take_due(now))
+            } {
                 if self.carry_out(&input, false).is_err() {
                     // Refused, nothing changed: refused again, and logged.
                     self.system

@@ -49,7 +49,16 @@ impl Session {
     /// a file.
     pub fn replay(&self) -> crate::Result<Replay> {
         let history = self.history.as_ref().ok_or_else(no_history)?;
-        Ok(history.replay(&self.system))
+        Ok(history.replay(&self.system, self.content_hash().ok_or_else(no_history)?))
+    }
+
+    /// The content hash of the scenario loaded ([`Scenario::content_hash`](super::super::Scenario::content_hash)),
+    /// what a replay records of it; `None` for a map loaded from a file.
+    pub fn content_hash(&self) -> Option<&str> {
+        match &self.source {
+            Source::Scenario { content_hash, .. } => Some(content_hash),
+            _ => None,
+        }
     }
 
     /// [`Session::replay`] as the file's JSON text.
@@ -60,11 +69,22 @@ impl Session {
     /// Loads `replay` on the scenario loaded (it must be the replay's scenario): the set-up
     /// is rebuilt and run to the recorded end with every request at its time (checkpoints
     /// and marks taken on the way); the session stands there, paused or not as it was.
-    /// Returns whether the trace hash is the recorded one. On an error nothing changes.
+    /// Returns whether the trace hash is the recorded one. On an error nothing changes; a
+    /// replay of another scenario, of a scenario whose content has changed since, or of
+    /// another behaviour version of the core is refused with that reason
+    /// ([`Replay::check_valid_for`]).
     pub fn load_replay(&mut self, replay: &Replay) -> crate::Result<ReplayCheck> {
-        if self.scenario().is_none() {
+        let (Some(scenario), Some(hash)) = (self.scenario(), self.content_hash()) else {
             return Err(no_history());
+        };
+        if scenario.name != replay.setup.scenario {
+            return Err(bad(&format!(
+                "it was made for scenario `{}`, but `{}` is loaded",
+                crate::present::excerpt(&replay.setup.scenario),
+                scenario.name
+            )));
         }
+        replay.check_valid_for(hash)?;
         let end = format!("end_ns {}", replay.end_ns);
         if let Some(reason) = beyond_replay_limit(&end, replay.end_ns) {
             return Err(bad(&reason));
@@ -148,7 +168,10 @@ impl Session {
         name: &str,
         text: &str,
     ) -> crate::Result<Comparison> {
-        let Source::Scenario { scenario, files } = &self.source else {
+        let Source::Scenario {
+            scenario, files, ..
+        } = &self.source
+        else {
             return Err(bad(
                 "a comparison needs a scenario; this map was loaded from a file",
             ));

@@ -561,7 +561,7 @@ impl Wiring {
         {
             return Err(SystemError::UnknownPort {
                 component: kind.name().to_owned(),
-                port: port.to_owned(),
+                port: crate::present::excerpt(port),
                 known: "Localization.InSimulatedPosition, Localization.InCurrentWheelAngle",
             }
             .into());

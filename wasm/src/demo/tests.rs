@@ -69,7 +69,7 @@ fn step_turns_wall_time_times_speed_into_whole_ticks() {
     assert_eq!(demo.step(16.0), 256);
     demo.session.set_paused(true);
     assert_eq!(demo.step(16.0), 0);
-    demo.run_ticks(1);
+    demo.run_ticks(1).unwrap();
     assert_eq!(
         demo.system().time_ns(),
         (16 + 1 + 1 + 100 + 8 + 256 + 1) * 1_000_000

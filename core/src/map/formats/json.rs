@@ -57,8 +57,12 @@ fn err(line: Option<usize>, reason: impl Into<String>) -> MapError {
 
 /// Reads an rtnav JSON map.
 pub fn load(text: &str) -> Result<GridMap, MapError> {
-    let file: MapFile = serde_json::from_str(crate::rtc::without_bom(text))
-        .map_err(|e| err(Some(e.line()), e.to_string()))?;
+    let file: MapFile = serde_json::from_str(crate::rtc::without_bom(text)).map_err(|e| {
+        err(
+            Some(e.line()),
+            crate::present::with_short_quotes(&e.to_string()),
+        )
+    })?;
     // The size is checked before anything is allocated for the cells (spec §2 Decision
     // 0.2): `width × height` within the limit, no overflow; then the geometry, before the
     // rows are read.

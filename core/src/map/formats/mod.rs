@@ -20,17 +20,8 @@ pub mod movingai;
 pub mod ros;
 mod yaml_mapping;
 
-/// `text` as an error message quotes it: at most [`SHOWN`] characters, cut with `…`, so a
-/// file that is not what it should be (one enormous line or value) gives a short message.
-fn shown(text: &str) -> String {
-    match text.char_indices().nth(SHOWN) {
-        Some((cut, _)) => format!("{}…", &text[..cut]),
-        None => text.to_owned(),
-    }
-}
-
-/// The characters of a file's text an error message quotes.
-const SHOWN: usize = 40;
+// What an error message quotes of a file: `crate::present::excerpt`, the one helper.
+use crate::present::excerpt as shown;
 
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>, crate::errors::MapError> {

@@ -214,13 +214,33 @@ pub struct ScenProblem {
 
 impl ScenProblem {
     /// The start as a `GridMap` cell: `(x, map_height − 1 − y)` (see the module docs).
-    pub fn start_cell(&self) -> Cell {
-        (self.start.0, self.map_height - 1 - self.start.1)
+    /// A problem whose start lies outside its map size (one built by hand: [`load_scen`]
+    /// checks what it reads) is refused with [`MapError::CellOutside`].
+    pub fn start_cell(&self) -> Result<Cell, MapError> {
+        self.cell(self.start, "ScenProblem start")
     }
 
-    /// The goal as a `GridMap` cell: `(x, map_height − 1 − y)`.
-    pub fn goal_cell(&self) -> Cell {
-        (self.goal.0, self.map_height - 1 - self.goal.1)
+    /// The goal as a `GridMap` cell: `(x, map_height − 1 − y)`; refused as
+    /// [`start_cell`](Self::start_cell) is.
+    pub fn goal_cell(&self) -> Result<Cell, MapError> {
+        self.cell(self.goal, "ScenProblem goal")
+    }
+
+    fn cell(&self, (x, y): (usize, usize), what: &'static str) -> Result<Cell, MapError> {
+        let flipped = self
+            .map_height
+            .checked_sub(1)
+            .and_then(|top| top.checked_sub(y));
+        match flipped {
+            Some(row) if x < self.map_width => Ok((x, row)),
+            _ => Err(MapError::CellOutside {
+                what,
+                x: i64::try_from(x).unwrap_or(i64::MAX),
+                y: i64::try_from(y).unwrap_or(i64::MAX),
+                width: self.map_width,
+                height: self.map_height,
+            }),
+        }
     }
 }
 

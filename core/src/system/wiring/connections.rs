@@ -161,7 +161,7 @@ impl Wiring {
             .links
             .find(id)
             .ok_or_else(|| SystemError::UnknownConnection {
-                id: id.to_owned(),
+                id: crate::present::excerpt(id),
                 known: self
                     .links
                     .all()
