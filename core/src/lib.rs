@@ -41,4 +41,4 @@ pub use reason::Reason;
 /// `core/tests/replay_fixtures.rs` fails until the fixtures are re-blessed: `RTNAV_BLESS=1
 /// cargo test -p rtnav --test replay_fixtures`) — and say in `CHANGELOG.md` why the new
 /// traces are right.
-pub const BEHAVIOUR_VERSION: u32 = 1;
+pub const BEHAVIOUR_VERSION: u32 = 2;
