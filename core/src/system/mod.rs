@@ -82,8 +82,10 @@ mod json_text;
 mod kind;
 mod links;
 mod mission;
+mod picked_files;
 mod rates;
 mod record;
+mod refusal;
 mod replay;
 mod robot;
 mod run_limit;
@@ -94,11 +96,12 @@ pub mod setup;
 mod status;
 mod telemetry;
 mod timeline;
+mod views;
 mod wiring;
 
-pub use compare::{ComparePlots, Comparison, RunSummary, compare, setup_with};
+pub use compare::{CompareTable, ComparePlots, Comparison, RunSummary, compare, setup_with};
 pub use conf_bundle::CONF_BUNDLE_HEADER;
-pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
+pub use error::{ConfBundleError, MAP_FILES_EXPECTED, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
 pub use exercise::{
     Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Verdict,
@@ -118,7 +121,9 @@ pub use inspect::{CellInspection, FieldInspection, ParentInspection};
 pub use kind::ComponentKind;
 pub use links::Peer;
 pub use mission::Mission;
+pub use picked_files::{PickError, PickedFiles};
 pub use rates::Rates;
+pub use refusal::Refusal;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use robot::System;
@@ -140,4 +145,8 @@ pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
 pub use status::{ComponentInfo, STILL, Status, SystemState};
 pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
 pub use timeline::Timeline;
+pub use views::{
+    ClockView, ComponentView, DirectionView, EventLevel, EventView, FrameView, MapView, PlanView,
+    PoseView, ScenarioView, TelemetryView,
+};
 pub use wiring::{Report, Wiring};

@@ -21,6 +21,7 @@ pub const STILL: f64 = 1e-3;
 
 /// The whole system's state, from its components' states.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum SystemState {
     /// Every component Inactive.
     Inactive,
@@ -297,6 +298,7 @@ impl fmt::Display for Status {
 
 /// One component as the GUI's RTC panel shows it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ComponentInfo {
     /// Which component.
     pub kind: ComponentKind,
