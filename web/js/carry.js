@@ -27,7 +27,7 @@ export function keepRun(app, lang, { confirm = (text) => window.confirm(text) } 
     return { go: confirm(t('carry.map_file')) };
   }
   const replay = app.attempt(() => demo.replay_json());
-  const layers = app.attempt(() => JSON.parse(demo.layers_json()));
+  const layers = app.attempt(() => demo.layers());
   const carried = replay.ok && {
     lang,
     at: Date.now(),
@@ -79,7 +79,7 @@ export async function restoreRun(app, carried) {
     return failed(app, errorText(e));
   }
   if (name === undefined || !(await app.scenarios.load(name))) return false;
-  const r = app.attempt(() => JSON.parse(demo.load_replay(carried.replay)));
+  const r = app.attempt(() => demo.load_replay(carried.replay));
   if (!r.ok) return failed(app, r.error);
   demo.set_paused(Boolean(carried.paused));
   app.attempt(() => demo.set_speed(carried.speed));

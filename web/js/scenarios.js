@@ -41,8 +41,8 @@ export function createScenarios(dom, app) {
   let current = null;
 
   function showAbout() {
-    const s = JSON.parse(demo.scenario_json());
-    const map = JSON.parse(demo.map_json());
+    const s = demo.scenario();
+    const map = demo.map();
     if (s) {
       dom.title.textContent = t('scenarios.about', { name: scenarioTitle(s.name) });
       dom.description.textContent = scenarioText(s, 'description');
@@ -162,7 +162,7 @@ export function createScenarios(dom, app) {
     }
     current = null;
     dom.select.value = CUSTOM;
-    const map = JSON.parse(demo.map_json());
+    const map = demo.map();
     custom.textContent = t('scenarios.map_file_named', { name: map.name });
     app.emit('tool', 'start');
     loaded(t('scenarios.map_loaded', { name: map.name, width: map.width, height: map.height, grid: map.grid_size }));

@@ -24,7 +24,7 @@ export function createShare(root, canvas, app) {
     // While the robot stands, making the link restarts the set-up from it (what the link
     // opens with): the panels read the system again, and the log starts afresh with the
     // restarted system's events (its clock starts again too).
-    if (!JSON.parse(demo.telemetry_json()).driving) {
+    if (!demo.telemetry().driving) {
       app.log.clear();
       app.log.update();
       app.log.page(t('share.restarted'), 'info');

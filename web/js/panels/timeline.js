@@ -5,7 +5,7 @@
 //
 // Every state is the core's (`Session`): a seek restores the nearest checkpoint and runs
 // from it (`demo.seek`), the recorded requests after the time reached are replayed as the
-// clock runs on, and a request made there drops them. The page only reads `timeline_json()`
+// clock runs on, and a request made there drops them. The page only reads `timeline()`
 // a few times a second and draws it.
 import { Demo } from '../../pkg/rtnav_wasm.js';
 import { el, setText } from '../dom.js';
@@ -137,7 +137,7 @@ export function createTimeline(root, app) {
     }
     if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name: scenarioTitle(name) }), 'error');
     demo.set_paused(true);
-    const r = app.attempt(() => JSON.parse(demo.load_replay(text)));
+    const r = app.attempt(() => demo.load_replay(text));
     jumped();
     if (!r.ok) return say(t('timeline.replay_refused', { error: r.error }), 'error');
     const c = r.value;
@@ -173,7 +173,7 @@ export function createTimeline(root, app) {
     const now = performance.now();
     if (!force && now - lastPoll < POLL_MS) return;
     lastPoll = now;
-    const r = app.attempt(() => JSON.parse(demo.timeline_json()));
+    const r = app.attempt(() => demo.timeline());
     const paused = demo.paused();
     // The same words as the system bar's button: Run while paused, Pause while running.
     setText(play, paused ? t('run.label') : t('pause.label'));

@@ -82,7 +82,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     });
   }
   app.on('loaded', () => {
-    app.ui.backward = JSON.parse(demo.plan_json()).direction === 'backward';
+    app.ui.backward = demo.plan().direction === 'backward';
     showDirection();
   });
   showDirection();
@@ -115,7 +115,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   });
 
   // ---- layers
-  const layers = JSON.parse(demo.layers_json());
+  const layers = demo.layers();
   const layerBoxes = Object.keys(LAYER_NAMES).filter((k) => k in layers).map((name) => {
     const box = el('input', { type: 'checkbox', id: `layer-${name}`, checked: layers[name] });
     box.addEventListener('change', () => {
@@ -141,7 +141,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     speed.value = String(demo.speed());
     brushUnit.value = app.ui.brush.unit;
     fillBrush();
-    const now = JSON.parse(demo.layers_json());
+    const now = demo.layers();
     for (const label of layerBoxes) {
       const box = label.querySelector('input');
       box.checked = Boolean(now[box.id.replace(/^layer-/, '')]);
@@ -188,8 +188,9 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   });
 
   return {
-    update() {
-      const paused = demo.paused();
+    /** Every frame: the clock's pause shown. @param {ClockView} clock */
+    update(clock) {
+      const { paused } = clock;
       if (pause.dataset.paused !== String(paused)) {
         pause.dataset.paused = String(paused);
         pause.textContent = paused ? t('run.label') : t('pause.label');
