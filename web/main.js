@@ -79,7 +79,7 @@ async function boot() {
         return { ok: true, value: guard.call(fn) };
       } catch (e) {
         // The refusal in the page's language, from the error's detail (`words.js`).
-        return { ok: false, error: errorText(e), message: e?.message ?? String(e) };
+        return { ok: false, error: errorText(e), message: e instanceof Error ? e.message : String(e) };
       } finally {
         app.requestMs += performance.now() - t0;
       }
@@ -121,7 +121,7 @@ async function boot() {
   const exercise = createExercisePanel($('exercise'), app);
   // English / 日本語: the page reloads in the other language with this run (js/carry.js);
   // for a map loaded from a file, which cannot be carried, only if the person agrees.
-  const languageSelect = $('language');
+  const languageSelect = /** @type {HTMLSelectElement} */ ($('language'));
   languageSelect.value = language();
   languageSelect.addEventListener('change', () => {
     const kept = keepRun(app, languageSelect.value);
@@ -213,6 +213,7 @@ async function boot() {
     frameTimes: () => frameTimes.slice(),
     clearFrameTimes: () => { frameTimes.length = 0; },
     /** Fixes the frame size (pixels) instead of fitting the canvas to the page. */
+    /** @param {number} w @param {number} h */
     setFrameSize: (w, h) => app.stage.setFixedSize(w, h),
     debugPanic: () => guard.call(() => demo.debug_panic()),
   };
@@ -227,8 +228,8 @@ async function boot() {
 
 boot().catch((e) => {
   const box = $('crash');
-  box.querySelector('h2').textContent = t('crash.boot.title');
-  box.querySelector('p').textContent = t('crash.boot.text');
+  /** @type {HTMLElement} */ (box.querySelector('h2')).textContent = t('crash.boot.title');
+  /** @type {HTMLElement} */ (box.querySelector('p')).textContent = t('crash.boot.text');
   $('crash-message').textContent = String(e && e.stack ? e.stack : e);
   box.hidden = false;
 });

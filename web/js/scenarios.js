@@ -185,6 +185,8 @@ export function createScenarios(dom, app) {
      * Reads the index, fills the picker and loads: the run `carried()` restores (a run
      * carried from the other language) if it does, else the set-up of the share link
      * `share` if given and good, else the default scenario.
+     * @param {string | null} [share]
+     * @param {(() => unknown) | null} [carried]
      */
     async loadDefault(share = null, carried = null) {
       index = JSON.parse(await fetchOk(INDEX_URL, 'text'));

@@ -162,7 +162,7 @@ pub fn build_pkg(profile: Profile) -> Result<Built> {
     }
     let mut bindgen = cmd("wasm-bindgen");
     bindgen
-        .args(["--target", "web", "--no-typescript", "--out-dir"])
+        .args(["--target", "web", "--out-dir"])
         .arg(&out);
     if profile == Profile::Release {
         bindgen.args(["--remove-name-section", "--remove-producers-section"]);

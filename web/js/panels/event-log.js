@@ -78,6 +78,7 @@ export function createEventLog(root, app) {
      * A note of the page's own (`level`: info, success, warn, error), after the core's
      * events so far (a request may have run the clock: its events come first).
      */
+    /** @param {string} text @param {string} [level] */
     page(text, level = 'info') {
       update(app.guard.call(() => demo.take_events()) ?? []);
       add({ time_s: demo.time_s(), kind: 'Page', level, text });

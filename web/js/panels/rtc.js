@@ -53,7 +53,7 @@ export function createRtcPanel(root, app) {
     const action = el('button', { type: 'button', class: 'act' });
     const fault = el('button', { type: 'button', class: 'fault danger', title: t('rtc.fault.title', { name: c.instance_name }) }, t('rtc.fault'));
     action.addEventListener('click', () => {
-      const what = action.dataset.action;
+      const what = /** @type {'activate' | 'deactivate' | 'reset'} */ (action.dataset.action);
       request(t(`system.act.${what}`, { name: c.name }), () => demo[what](c.name), what === 'activate' || what === 'reset');
     });
     fault.addEventListener('click', () => request(t('rtc.fault.request', { name: c.name }), () => demo.inject_fault(c.name)));
