@@ -125,7 +125,11 @@ fn one_frame_read_holds_the_clock_telemetry_components_new_events_and_exercise()
     assert_eq!(session.frame().events, Vec::new());
     session.all(&Input::ActivateAll);
     let next = session.frame();
-    assert!(kinds(&next.events).contains(&"StateChanged"), "{:?}", kinds(&next.events));
+    assert!(
+        kinds(&next.events).contains(&"StateChanged"),
+        "{:?}",
+        kinds(&next.events)
+    );
 }
 
 #[test]
@@ -298,7 +302,10 @@ fn a_bad_map_file_is_refused_and_the_map_stays() {
     bad.add("broken.json", b"{\"width\": 3".to_vec());
     let err = session.load_map_files(&bad, 1.0).unwrap_err();
     assert_eq!(err.file.as_deref(), Some("broken.json"));
-    assert!(err.to_string().starts_with("`broken.json`: rtnav JSON"), "{err}");
+    assert!(
+        err.to_string().starts_with("`broken.json`: rtnav JSON"),
+        "{err}"
+    );
     assert_eq!(session.map_view(), before);
     assert_eq!(session.scenario_view().unwrap().name, "open_field");
     // A good one replaces the scenario: planners Active, no goal yet.
@@ -437,12 +444,23 @@ fn the_brush_covers_cells_around_the_cell_under_it_or_a_square_in_metres() {
     let g = map.grid_size;
     let (cx, cy) = (map.origin.0 + 10.5 * g, map.origin.1 + 20.5 * g);
     let square = |x0: usize, x1: usize, y0: usize, y1: usize| -> Vec<(usize, usize)> {
-        (y0..=y1).flat_map(|y| (x0..=x1).map(move |x| (x, y))).collect()
+        (y0..=y1)
+            .flat_map(|y| (x0..=x1).map(move |x| (x, y)))
+            .collect()
     };
     assert_eq!(session.brush_cells(cx, cy, 1.0, false), [(10, 20)]);
-    assert_eq!(session.brush_cells(cx, cy, 2.0, false), square(10, 11, 20, 21));
-    assert_eq!(session.brush_cells(cx, cy, 3.0, false), square(9, 11, 19, 21));
-    assert_eq!(session.brush_cells(cx, cy, 3.0 * g, true), square(9, 11, 19, 21));
+    assert_eq!(
+        session.brush_cells(cx, cy, 2.0, false),
+        square(10, 11, 20, 21)
+    );
+    assert_eq!(
+        session.brush_cells(cx, cy, 3.0, false),
+        square(9, 11, 19, 21)
+    );
+    assert_eq!(
+        session.brush_cells(cx, cy, 3.0 * g, true),
+        square(9, 11, 19, 21)
+    );
     // A square smaller than a cell still paints the cell under it.
     assert_eq!(session.brush_cells(cx, cy, 0.1 * g, true), [(10, 20)]);
     // Only cells of the map.
@@ -451,6 +469,9 @@ fn the_brush_covers_cells_around_the_cell_under_it_or_a_square_in_metres() {
         session.brush_cells(ox + 0.5 * g, oy + 0.5 * g, 3.0, false),
         square(0, 1, 0, 1)
     );
-    assert_eq!(session.brush_cells(ox - 5.0 * g, oy, 3.0, false), Vec::new());
+    assert_eq!(
+        session.brush_cells(ox - 5.0 * g, oy, 3.0, false),
+        Vec::new()
+    );
     assert_eq!(session.brush_cells(f64::NAN, oy, 3.0, false), Vec::new());
 }

@@ -160,7 +160,8 @@ fn past_the_boundary(text: &str) -> Vec<&'static str> {
             code.match_indices(word).any(|(i, _)| {
                 let before = code[..i].chars().next_back();
                 let after = code[i + word.len()..].chars().next();
-                let whole = |c: Option<char>, edge: char| !edge.is_alphanumeric() || !c.is_some_and(ident);
+                let whole =
+                    |c: Option<char>, edge: char| !edge.is_alphanumeric() || !c.is_some_and(ident);
                 whole(before, word.chars().next().unwrap_or(' '))
                     && whole(after, word.chars().next_back().unwrap_or(' '))
             })
@@ -181,7 +182,10 @@ fn the_wasm_layer_reaches_nothing_past_the_session_and_the_screen() {
             (!words.is_empty()).then(|| format!("{}: {words:?}", f.display()))
         })
         .collect();
-    assert!(found.is_empty(), "the wasm layer reaches past Session: {found:?}");
+    assert!(
+        found.is_empty(),
+        "the wasm layer reaches past Session: {found:?}"
+    );
     // The check can fail: each kind of reach is found.
     let reach = "fn f(d: &Demo) { d.session.system().wiring(); }\n\
                  fn g(m: &Mission) {}\nfn h() { let v = serde_json::json!({}); }";
@@ -189,5 +193,8 @@ fn the_wasm_layer_reaches_nothing_past_the_session_and_the_screen() {
         past_the_boundary(reach),
         [".system()", "Mission", "serde_json::json!"]
     );
-    assert_eq!(past_the_boundary("fn f() -> SystemGraph {}\n// System"), Vec::<&str>::new());
+    assert_eq!(
+        past_the_boundary("fn f() -> SystemGraph {}\n// System"),
+        Vec::<&str>::new()
+    );
 }

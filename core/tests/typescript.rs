@@ -14,7 +14,7 @@ use std::path::Path;
 use rtnav::ErrorDetail;
 use rtnav::render::Layers;
 use rtnav::system::{
-    CellInspection, CompareTable, ComparePlots, ComponentParameters, ExerciseStatus, FrameView,
+    CellInspection, ComparePlots, CompareTable, ComponentParameters, ExerciseStatus, FrameView,
     MapView, PlanView, PlotWindow, ReplayCheck, ScenarioView, SystemGraph, TimelineView,
 };
 use ts_rs::{Config, TS, TypeVisitor};

@@ -326,9 +326,7 @@ impl Demo {
 
     /// Draws the current state into the frame if anything changed. Returns whether it drew.
     pub fn render(&mut self) -> Result<bool, JsValue> {
-        self.screen
-            .draw(&self.session)
-            .map_err(|e| js(refused(e)))
+        self.screen.draw(&self.session).map_err(|e| js(refused(e)))
     }
 
     /// Whether the next `render` only draws the moving parts (robot, trail, marks) over the
@@ -340,7 +338,9 @@ impl Demo {
 
     /// Changes the frame size (pixels).
     pub fn resize(&mut self, width: u32, height: u32) -> Result<(), JsValue> {
-        self.screen.resize(width, height).map_err(|e| js(refused(e)))
+        self.screen
+            .resize(width, height)
+            .map_err(|e| js(refused(e)))
     }
 
     /// Where the frame's pixels start in wasm memory (RGBA, opaque, rows top to bottom).

@@ -182,7 +182,10 @@ mod tests {
         let mut broken = rtnav::system::PickedFiles::new();
         broken.add("broken.json", b"{\"width\": 3".to_vec());
         let picked = Refusal::from(broken.load_map(1.0).unwrap_err());
-        assert!(picked.message.starts_with("`broken.json`: rtnav JSON"), "{picked}");
+        assert!(
+            picked.message.starts_with("`broken.json`: rtnav JSON"),
+            "{picked}"
+        );
         assert_eq!(
             serde_json::to_value(picked.detail).unwrap()["file"],
             "broken.json"

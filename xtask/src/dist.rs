@@ -49,10 +49,9 @@ pub fn assemble(dir: &Path) -> Result {
         let only_typing = |f: &std::ffi::OsString| f == "types" || f == "tsconfig.json";
         !first.is_some_and(|f| {
             f == "pkg" || f == "fixtures" || f == "node_modules" || only_typing(&f)
-        })
-            && !rel
-                .file_name()
-                .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        }) && !rel
+            .file_name()
+            .is_some_and(|n| n.to_string_lossy().starts_with('.'))
     })?;
     let pkg = dir.join("pkg");
     std::fs::create_dir_all(&pkg)?;

@@ -37,6 +37,6 @@ mod view;
 pub use frame::Frame;
 pub use of_system::{FieldBuffers, caption, ghost_of, scene_of};
 pub use renderer::Renderer;
-pub use screen::{PAGE_LAYERS, Screen};
 pub use scene::{FieldCellState, FieldView, Ghost, Layers, RobotView, Scene};
+pub use screen::{PAGE_LAYERS, Screen};
 pub use view::{Camera, MAX_FRAME_SIDE, MAX_ZOOM, ViewTransform};

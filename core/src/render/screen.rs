@@ -2,11 +2,11 @@
 //! and whether anything may have changed since the last frame — and of a [`Comparison`].
 //! Every call takes the session it shows; the screen knows nothing else of the system.
 
+use super::frame::Frame;
 use super::of_system::caption;
 use super::renderer::Renderer;
 use super::scene::Layers;
 use super::view::ViewTransform;
-use super::frame::Frame;
 use crate::errors::RenderError;
 use crate::map::Cell;
 use crate::system::{Comparison, Session};

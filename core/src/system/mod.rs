@@ -99,7 +99,7 @@ mod timeline;
 mod views;
 mod wiring;
 
-pub use compare::{CompareTable, ComparePlots, Comparison, RunSummary, compare, setup_with};
+pub use compare::{ComparePlots, CompareTable, Comparison, RunSummary, compare, setup_with};
 pub use conf_bundle::CONF_BUNDLE_HEADER;
 pub use error::{ConfBundleError, MAP_FILES_EXPECTED, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
@@ -123,8 +123,8 @@ pub use links::Peer;
 pub use mission::Mission;
 pub use picked_files::{PickError, PickedFiles};
 pub use rates::Rates;
-pub use refusal::Refusal;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
+pub use refusal::Refusal;
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use robot::System;
 pub use run_limit::MAX_REPLAY_NS;

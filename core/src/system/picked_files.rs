@@ -120,9 +120,7 @@ impl PickedFiles {
     /// nothing is loaded then. Returns the file's name and the map.
     pub fn load_map(&self, movingai_grid_size: f64) -> Result<(String, GridMap), PickError> {
         let (name, source) = self.map_source(movingai_grid_size)?;
-        let map = source
-            .load(&self.resolver())
-            .map_err(|e| about(&name, e))?;
+        let map = source.load(&self.resolver()).map_err(|e| about(&name, e))?;
         Ok((name, map))
     }
 

@@ -3,16 +3,16 @@
 //! reaches past the [`Session`].
 
 use super::super::graph::SystemGraph;
-use super::super::inspect::CellInspection;
 use super::super::input::Input;
+use super::super::inspect::CellInspection;
 use super::super::kind::ComponentKind;
 use super::super::picked_files::{PickError, PickedFiles};
 use super::super::refusal::Refusal;
 use super::super::scenario::Scenario;
 use super::super::status::{ComponentInfo, SystemState};
 use super::super::views::{
-    ClockView, ComponentView, DirectionView, EventView, FrameView, MapView, PlanView, PoseView, ScenarioView,
-    TelemetryView,
+    ClockView, ComponentView, DirectionView, EventView, FrameView, MapView, PlanView, PoseView,
+    ScenarioView, TelemetryView,
 };
 use super::Session;
 use crate::errors::SessionError;
@@ -275,11 +275,16 @@ impl Session {
             }
             return out;
         }
-        let n = if size.is_finite() { size.max(1.0) as i64 } else { 1 };
+        let n = if size.is_finite() {
+            size.max(1.0) as i64
+        } else {
+            1
+        };
         let n = n.min(1024);
         let r = (n - 1) / 2;
         out.extend(
-            (-r..=n - 1 - r).flat_map(|dy| (-r..=n - 1 - r).filter_map(move |dx| cell(cx + dx, cy + dy))),
+            (-r..=n - 1 - r)
+                .flat_map(|dy| (-r..=n - 1 - r).filter_map(move |dx| cell(cx + dx, cy + dy))),
         );
         out
     }
@@ -325,7 +330,12 @@ impl Session {
     }
 
     /// Sets the parameter `name` of the component named `component` from text.
-    pub fn set_param_named(&mut self, component: &str, name: &str, text: &str) -> crate::Result<()> {
+    pub fn set_param_named(
+        &mut self,
+        component: &str,
+        name: &str,
+        text: &str,
+    ) -> crate::Result<()> {
         let kind = ComponentKind::from_name(component)?;
         self.set_param_text(kind, name, text)
     }
@@ -355,7 +365,8 @@ impl Session {
     /// Loads the scenario `json` (its map files among `files`). On an error the current
     /// scenario stays; the error names the scenario when it was read.
     pub fn load_scenario_text(&mut self, json: &str, files: &PickedFiles) -> Result<(), Refusal> {
-        let scenario = Scenario::from_json(json).map_err(|e| Refusal::from(crate::Error::from(e)))?;
+        let scenario =
+            Scenario::from_json(json).map_err(|e| Refusal::from(crate::Error::from(e)))?;
         let name = scenario.name.clone();
         self.load_scenario(scenario, &files.resolver())
             .map_err(|e| Refusal::from(e).about_scenario(&name))
@@ -369,6 +380,7 @@ impl Session {
         movingai_grid_size: f64,
     ) -> Result<(), PickError> {
         let (name, map) = files.load_map(movingai_grid_size)?;
-        self.load_map(&name, map).map_err(|error| PickError { file: None, error })
+        self.load_map(&name, map)
+            .map_err(|error| PickError { file: None, error })
     }
 }
