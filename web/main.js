@@ -117,7 +117,7 @@ async function boot() {
   const params = createParamsPanel($('params-panel'), app);
   const inspector = createInspector($('inspector-panel'), app);
   const plots = createPlots($('plots-panel'), app);
-  createShare($('share'), $('view'), app);
+  createShare($('share'), /** @type {HTMLCanvasElement} */ ($('view')), app);
   const exercise = createExercisePanel($('exercise'), app);
   // English / 日本語: the page reloads in the other language with this run (js/carry.js);
   // for a map loaded from a file, which cannot be carried, only if the person agrees.

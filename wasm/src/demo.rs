@@ -75,7 +75,7 @@ impl Demo {
     pub fn load_scenario(&mut self, json: &str, files: &Files) -> Result<(), JsValue> {
         self.session
             .load_scenario_text(json, &files.0)
-            .map_err(|e| js(e.into()))?;
+            .map_err(|e| js((*e).into()))?;
         self.replaced();
         Ok(())
     }

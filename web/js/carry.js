@@ -1,3 +1,4 @@
+// @ts-check
 // The run carried across a change of language. Switching English ↔ 日本語 reloads the page
 // (every string is drawn anew in the other language); what the robot did must not be lost
 // with it. Before the reload the session's replay (`demo.replay_json()`: the set-up and every
@@ -18,6 +19,11 @@ const FRESH_MS = 60_000;
  * Keeps the run for a reload in `lang`. Returns false when the person chose to stay (a map
  * loaded from a file cannot be carried, and they were asked), else true — with `share`, a
  * set-up token to put in the address when the run could not be kept (storage blocked).
+ */
+/**
+ * @param {App} app
+ * @param {string} lang
+ * @param {{confirm?: (text: string) => boolean}} [options]
  */
 export function keepRun(app, lang, { confirm = (text) => window.confirm(text) } = {}) {
   const { demo } = app;
@@ -54,6 +60,7 @@ function drop() {
 }
 
 /** The run kept for this load in `lang` (taken: a second load does not replay it), or null. */
+/** @param {string} lang */
 export function takeRun(lang) {
   let carried = null;
   try {
@@ -69,6 +76,10 @@ export function takeRun(lang) {
 /**
  * Replays a carried run on its scenario (the index must be read) and puts the page back as it
  * was. Returns whether it did; when it did not, the reason is in the notice and the log.
+ */
+/**
+ * @param {App} app
+ * @param {{replay: string, layers?: Record<string, boolean>, [k: string]: any}} carried
  */
 export async function restoreRun(app, carried) {
   const { demo } = app;
@@ -97,6 +108,7 @@ export async function restoreRun(app, carried) {
   return true;
 }
 
+/** @param {App} app @param {string} error */
 function failed(app, error) {
   app.notice.show(t('carry.failed', { error }), 'error');
   app.log.page(t('carry.failed', { error }), 'error');

@@ -21,14 +21,14 @@ pub struct PickError {
     /// The file the error is about, if it is one file's.
     pub file: Option<String>,
     /// What is wrong.
-    pub error: crate::Error,
+    pub error: Box<crate::Error>,
 }
 
 impl From<SessionError> for PickError {
     fn from(e: SessionError) -> Self {
         Self {
             file: None,
-            error: e.into(),
+            error: Box::new(e.into()),
         }
     }
 }
@@ -45,7 +45,7 @@ impl std::fmt::Display for PickError {
 fn about(name: &str, error: impl Into<crate::Error>) -> PickError {
     PickError {
         file: Some(name.to_owned()),
-        error: error.into(),
+        error: Box::new(error.into()),
     }
 }
 

@@ -57,7 +57,7 @@ impl From<Error> for Refusal {
 
 impl From<PickError> for Refusal {
     fn from(e: PickError) -> Self {
-        let r = Refusal::from(e.error);
+        let r = Refusal::from(*e.error);
         match &e.file {
             Some(name) => r.about_file(name),
             None => r,

@@ -364,12 +364,16 @@ impl Session {
 
     /// Loads the scenario `json` (its map files among `files`). On an error the current
     /// scenario stays; the error names the scenario when it was read.
-    pub fn load_scenario_text(&mut self, json: &str, files: &PickedFiles) -> Result<(), Refusal> {
-        let scenario =
-            Scenario::from_json(json).map_err(|e| Refusal::from(crate::Error::from(e)))?;
+    pub fn load_scenario_text(
+        &mut self,
+        json: &str,
+        files: &PickedFiles,
+    ) -> Result<(), Box<Refusal>> {
+        let scenario = Scenario::from_json(json)
+            .map_err(|e| Box::new(Refusal::from(crate::Error::from(e))))?;
         let name = scenario.name.clone();
         self.load_scenario(scenario, &files.resolver())
-            .map_err(|e| Refusal::from(e).about_scenario(&name))
+            .map_err(|e| Box::new(Refusal::from(e).about_scenario(&name)))
     }
 
     /// Loads the map picked among `files` ([`PickedFiles::load_map`]) into a fresh system.
@@ -380,7 +384,9 @@ impl Session {
         movingai_grid_size: f64,
     ) -> Result<(), PickError> {
         let (name, map) = files.load_map(movingai_grid_size)?;
-        self.load_map(&name, map)
-            .map_err(|error| PickError { file: None, error })
+        self.load_map(&name, map).map_err(|error| PickError {
+            file: None,
+            error: Box::new(error),
+        })
     }
 }

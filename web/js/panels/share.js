@@ -1,3 +1,4 @@
+// @ts-check
 // Share and export (issue 8): a link that reproduces this set-up (the scenario, where the
 // robot starts and goes, the map edits since the scenario was loaded and every parameter
 // changed; `share_token`), the telemetry as CSV (`telemetry_csv`) and the frame on the
@@ -6,6 +7,11 @@ import { el } from '../dom.js';
 import { download, downloadText } from '../download.js';
 import { t, language } from '../i18n.js';
 
+/**
+ * @param {HTMLElement} root
+ * @param {HTMLCanvasElement} canvas
+ * @param {App} app
+ */
 export function createShare(root, canvas, app) {
   const { demo } = app;
 
@@ -26,7 +32,7 @@ export function createShare(root, canvas, app) {
     // restarted system's events (its clock starts again too).
     if (!demo.telemetry().driving) {
       app.log.clear();
-      app.log.update();
+      app.log.update(app.guard.call(() => demo.take_events()) ?? []);
       app.log.page(t('share.restarted'), 'info');
     }
     app.emit('changed');
@@ -59,7 +65,7 @@ export function createShare(root, canvas, app) {
     onclick: () => {
       const r = app.attempt(() => demo.telemetry_csv());
       if (!r.ok) return app.notice.show(t('share.csv.none', { error: r.error }), 'error');
-      downloadText(r.value, 'rtnav-telemetry.csv', 'text/csv');
+      downloadText(r.value ?? '', 'rtnav-telemetry.csv', 'text/csv');
     },
   }, t('share.csv'));
   const png = el('button', {
