@@ -16,7 +16,7 @@ pub(crate) struct Refusal {
     /// The English words (the error's `Display`).
     pub message: String,
     /// The error as data.
-    pub detail: Option<rtnav::system::Refusal>,
+    pub detail: Option<Box<rtnav::system::Refusal>>,
 }
 
 impl From<String> for Refusal {
@@ -32,7 +32,7 @@ impl From<rtnav::system::Refusal> for Refusal {
     fn from(r: rtnav::system::Refusal) -> Self {
         Self {
             message: r.message.clone(),
-            detail: Some(r),
+            detail: Some(Box::new(r)),
         }
     }
 }

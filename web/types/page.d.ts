@@ -39,7 +39,7 @@ interface App {
   };
   log: {
     clear(): void;
-    update(events: EventView[]): void;
+    update(events?: EventView[]): void;
     page(text: string, level?: string): void;
   };
   stage: {

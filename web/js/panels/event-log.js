@@ -62,8 +62,12 @@ export function createEventLog(root, app) {
     while (list.children.length > MAX_ENTRIES) list.lastElementChild?.remove();
   }
 
-  /** Adds the events read (a frame's, or those up to a note of the page's). @param {EventView[]} events */
-  function update(events) {
+  /**
+   * Adds the events read: a frame's, or (without any given) those since the last read —
+   * before a note of the page's, or after a change that cleared the log.
+   * @param {EventView[]} [events]
+   */
+  function update(events = app.guard.call(() => demo.take_events()) ?? []) {
     for (const e of events) add(e);
     const loud = events.filter((e) => e.kind in NOTICE).at(-1);
     if (loud) app.notice.show(eventText(loud), loud.level, { until: NOTICE[loud.kind](loud) });
@@ -80,7 +84,7 @@ export function createEventLog(root, app) {
      */
     /** @param {string} text @param {string} [level] */
     page(text, level = 'info') {
-      update(app.guard.call(() => demo.take_events()) ?? []);
+      update();
       add({ time_s: demo.time_s(), kind: 'Page', level, text });
     },
   };

@@ -32,7 +32,7 @@ export function createShare(root, canvas, app) {
     // restarted system's events (its clock starts again too).
     if (!demo.telemetry().driving) {
       app.log.clear();
-      app.log.update(app.guard.call(() => demo.take_events()) ?? []);
+      app.log.update();
       app.log.page(t('share.restarted'), 'info');
     }
     app.emit('changed');
