@@ -1,3 +1,4 @@
+// @ts-check
 // rtnav page entry: loads the wasm module, creates the Demo handle (the whole system and
 // its renderer, in Rust memory), mounts the stage and the panels, loads the default
 // scenario, runs the clock. No simulation logic lives here: the page owns the clock
@@ -27,7 +28,8 @@ import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
 import { errorText } from './js/say.js';
 import { keepRun, takeRun, restoreRun } from './js/carry.js';
 
-const $ = (id) => document.getElementById(id);
+/** The element with `id` (the page's HTML has every one these modules ask for). @param {string} id */
+const $ = (id) => /** @type {HTMLElement} */ (document.getElementById(id));
 
 /** How many frame times the page keeps (for the end-to-end test's median). */
 const FRAME_TIMES = 600;
@@ -47,28 +49,37 @@ async function boot() {
 
   // What every module shares: the handle, the crash guard, the page's own settings, and
   // `attempt` — a request whose refusal (an error value from Rust) is shown, not thrown.
+  /** @type {Map<string, Array<(...args: any[]) => void>>} */
   const listeners = new Map();
-  const app = {
+  const app = /** @type {App} */ ({
     demo,
     guard,
     memory: wasm.memory,
     ui: { tool: 'goal', backward: false, brush: { size: 1, unit: 'cells' }, pendingStart: null },
+    /** @param {string} name @param {(...args: any[]) => void} fn */
     on(name, fn) {
-      if (!listeners.has(name)) listeners.set(name, []);
-      listeners.get(name).push(fn);
+      const fns = listeners.get(name) ?? [];
+      fns.push(fn);
+      listeners.set(name, fns);
     },
+    /** @param {string} name @param {...unknown} args */
     emit(name, ...args) {
       for (const fn of listeners.get(name) ?? []) fn(...args);
     },
     /** Wall time [ms] the requests took since the last frame (see the loop below). */
     requestMs: 0,
+    /**
+     * @template T
+     * @param {() => T} fn
+     * @returns {Attempt<T>}
+     */
     attempt(fn) {
       const t0 = performance.now();
       try {
         return { ok: true, value: guard.call(fn) };
       } catch (e) {
         // The refusal in the page's language, from the error's detail (`say.js`).
-        return { ok: false, error: errorText(e), message: e?.message ?? String(e) };
+        return { ok: false, error: errorText(e), message: e instanceof Error ? e.message : String(e) };
       } finally {
         app.requestMs += performance.now() - t0;
       }
@@ -76,6 +87,12 @@ async function boot() {
     /**
      * A lifecycle request of a button (`what` names it): a refusal goes to the notice and the
      * log; Reset and Activate (`endsNotices`) end the notices of the states they leave.
+     */
+    /**
+     * @template T
+     * @param {string} what
+     * @param {() => T} fn
+     * @returns {Attempt<T>}
      */
     request(what, fn, endsNotices = false) {
       if (endsNotices) app.notice.endState();
@@ -87,7 +104,7 @@ async function boot() {
       app.emit('changed');
       return r;
     },
-  };
+  });
   app.notice = createNotice($('notice'), $('notice-text'), $('notice-close'));
   app.log = createEventLog($('log-panel'), app);
   app.stage = createStage($('canvas-wrap'), $('view'), $('overlay'), $('tool-hint'), app);
@@ -100,11 +117,11 @@ async function boot() {
   const params = createParamsPanel($('params-panel'), app);
   const inspector = createInspector($('inspector-panel'), app);
   const plots = createPlots($('plots-panel'), app);
-  createShare($('share'), $('view'), app);
+  createShare($('share'), /** @type {HTMLCanvasElement} */ ($('view')), app);
   const exercise = createExercisePanel($('exercise'), app);
   // English / 日本語: the page reloads in the other language with this run (js/carry.js);
   // for a map loaded from a file, which cannot be carried, only if the person agrees.
-  const languageSelect = $('language');
+  const languageSelect = /** @type {HTMLSelectElement} */ ($('language'));
   languageSelect.value = language();
   languageSelect.addEventListener('change', () => {
     const kept = keepRun(app, languageSelect.value);
@@ -126,6 +143,7 @@ async function boot() {
   const compare = createCompare($('params-panel'), $('compare-view'), app);
   const simTime = $('sim-time');
 
+  /** @type {number[]} */
   const frameTimes = [];
   // The frame budget counts what the requests between two frames took (a stroke's MapUpdate
   // or a goal on a large map): after one that took the budget, the frame steps no further,
@@ -147,28 +165,33 @@ async function boot() {
     // What reads the page's layout (where the robot and goal are on screen) goes before the panels
     // write to the page: the layout of the last frame is still valid then, and is not made
     // again in the middle of this one.
+    // One read of the session per frame (`Session::frame`): the clock, the telemetry and
+    // status, the components, the events since the last frame, the exercise — handed to
+    // every panel, which reads nothing of it again.
+    const frame = guard.call(() => demo.frame());
+    if (!frame) return false;
+    app.frame = frame;
     legend.update(app.stage.robotBox);
     app.notice.update(app.stage.keepClear);
     frameTimes.push(t1 - t0);
     if (frameTimes.length > FRAME_TIMES) frameTimes.shift();
-    simTime.textContent = `${demo.time_s().toFixed(3)} s`;
-    const behind = demo.behind_s();
-    simTime.classList.toggle('behind', behind > BEHIND_S);
-    simTime.title = behind > BEHIND_S ? t('clock.behind', { s: behind.toFixed(2) }) : '';
-    const components = JSON.parse(demo.components_json());
-    systemBar.update(components);
-    rtc.update(components);
-    app.log.update();
-    telemetry.update();
+    const { clock } = frame;
+    simTime.textContent = `${clock.time_s.toFixed(3)} s`;
+    simTime.classList.toggle('behind', clock.behind_s > BEHIND_S);
+    simTime.title = clock.behind_s > BEHIND_S ? t('clock.behind', { s: clock.behind_s.toFixed(2) }) : '';
+    systemBar.update(frame.telemetry.state, frame.components);
+    rtc.update(frame.components);
+    app.log.update(frame.events);
+    telemetry.update(frame.telemetry);
     timeline.update();
-    toolbar.update();
-    exercise.update(t1);
+    toolbar.update(clock);
+    exercise.update(frame.exercise);
     // The teaching panels work only while shown, and at their own pace (not every frame).
     const now = performance.now();
     params.update(now, tabs.visible('params'));
     inspector.update(now, tabs.visible('inspector'));
     plots.update(now, tabs.visible('plots'));
-    system.update(now, tabs.visible('system'), components);
+    system.update(now, tabs.visible('system'), frame.components);
     // This frame's own requests (drawing, the panels) are not the next frame's.
     app.requestMs = 0;
     return !guard.crashed;
@@ -190,6 +213,7 @@ async function boot() {
     frameTimes: () => frameTimes.slice(),
     clearFrameTimes: () => { frameTimes.length = 0; },
     /** Fixes the frame size (pixels) instead of fitting the canvas to the page. */
+    /** @param {number} w @param {number} h */
     setFrameSize: (w, h) => app.stage.setFixedSize(w, h),
     debugPanic: () => guard.call(() => demo.debug_panic()),
   };
@@ -204,8 +228,8 @@ async function boot() {
 
 boot().catch((e) => {
   const box = $('crash');
-  box.querySelector('h2').textContent = t('crash.boot.title');
-  box.querySelector('p').textContent = t('crash.boot.text');
+  /** @type {HTMLElement} */ (box.querySelector('h2')).textContent = t('crash.boot.title');
+  /** @type {HTMLElement} */ (box.querySelector('p')).textContent = t('crash.boot.text');
   $('crash-message').textContent = String(e && e.stack ? e.stack : e);
   box.hidden = false;
 });

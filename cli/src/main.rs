@@ -538,11 +538,7 @@ fn page_session(path: &Path, root: Option<PathBuf>) -> CliResult<Session> {
 
 fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<ExitCode> {
     let session = page_session(path, root)?;
-    let cell = session
-        .system()
-        .wiring()
-        .inspect_cell(x, y)
-        .map_err(|e| e.to_string())?;
+    let cell = session.inspect_cell(x, y).map_err(|e| e.to_string())?;
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
     Ok(ExitCode::SUCCESS)

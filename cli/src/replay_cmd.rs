@@ -64,12 +64,11 @@ pub(super) fn replay(
     let check = session
         .load_replay(&replay)
         .map_err(|e| format!("`{}`: {e}", file.display()))?;
-    let system = session.system();
     println!("replay          {} ({} bytes)", file.display(), text.len());
     println!("scenario        {}", check.scenario);
     println!("requests        {}", check.inputs);
-    println!("simulated time  {:.3} s", system.time());
-    println!("status          {}", system.status());
+    println!("simulated time  {:.3} s", session.time_s());
+    println!("status          {}", session.status());
     println!(
         "samples         {} (recorded {})",
         check.samples, check.expected_samples
@@ -81,12 +80,12 @@ pub(super) fn replay(
         println!("reproduced      NO: recorded {}", check.expected_hash);
     }
     if let Some(p) = csv {
-        let rows = system.record().telemetry().to_csv();
+        let rows = session.telemetry_csv();
         std::fs::write(p, rows).map_err(|e| format!("cannot write `{}`: {e}", p.display()))?;
         println!("telemetry       {}", p.display());
     }
     if let Some(p) = png {
-        write_png(system, size, p)?;
+        write_png(session.system(), size, p)?;
         println!("frame           {}", p.display());
     }
     Ok(if check.matches {

@@ -71,12 +71,14 @@ pub enum Error {
 /// named fields as the enum holds them (`{"component": "DriveControl", "from": "Inactive",
 /// "request": "Deactivate"}`). The English words stay the error's `Display`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ErrorDetail {
     /// The [`Error`] variant: `Lifecycle`, `Config`, `Map`, ….
     pub area: &'static str,
     /// The area enum's variant (`Timestamp`'s one kind is `Invalid`).
     pub kind: String,
     /// The variant's named fields (an object; empty for a variant without fields).
+    #[cfg_attr(feature = "typescript", ts(type = "Record<string, unknown>"))]
     pub fields: serde_json::Value,
 }
 

@@ -9,6 +9,7 @@ use crate::rtc::Time;
 /// A pose in the map frame: metres, and radians counter-clockwise from the X axis
 /// (000 §5.2.4.2).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct Pose {
     /// X in metres.
     pub x: f64,

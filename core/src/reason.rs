@@ -22,6 +22,11 @@ use crate::present::fixed;
     strum(serialize_all = "snake_case")
 )]
 #[non_exhaustive]
+#[cfg_attr(
+    feature = "typescript",
+    derive(ts_rs::TS),
+    ts(as = "ReasonData<'static>", rename = "Reason")
+)]
 pub enum Reason {
     /// An error of the core (a refused input, a plan that cannot be made).
     Error(Error),
@@ -76,8 +81,9 @@ impl From<Error> for Reason {
     }
 }
 
-/// What a [`Reason`] serializes as.
+/// What a [`Reason`] serializes as (and, for the page's declarations, its type).
 #[derive(Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS), ts(rename = "ReasonData"))]
 #[serde(tag = "kind", rename_all = "snake_case")]
 enum ReasonData<'a> {
     Error {

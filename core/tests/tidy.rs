@@ -122,3 +122,79 @@ fn errors_rs_keeps_only_the_crate_error_and_the_re_exports() {
     assert_eq!(enums, 1, "errors.rs defines only `Error`");
     assert!(text.contains("pub enum Error {") && text.contains("pub type Result"));
 }
+
+/// What the wasm layer may not name: the system's parts behind the session, and the
+/// renderer behind the screen (`ARCHITECTURE.md`: the wasm layer binds `Session` and
+/// `Screen`, one call each, and holds no logic).
+const PAST_THE_BOUNDARY: &[&str] = &[
+    ".system()",
+    "System",
+    "Wiring",
+    "Mission",
+    "Record",
+    "Renderer",
+    "ComponentKind",
+    "ComponentInfo",
+    "GridMap",
+    "MapSource",
+    "serde_json::json!",
+    "serde_json::Value",
+    "to_value(",
+    "from_value(",
+];
+
+/// The words of `PAST_THE_BOUNDARY` that `text` names outside comments and tests (a word
+/// counts only whole: `SystemGraph` is not `System`).
+fn past_the_boundary(text: &str) -> Vec<&'static str> {
+    let code: String = text
+        .lines()
+        .take_while(|l| !l.starts_with("#[cfg(test)]"))
+        .filter(|l| !l.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let ident = |c: char| c.is_alphanumeric() || c == '_';
+    PAST_THE_BOUNDARY
+        .iter()
+        .copied()
+        .filter(|word| {
+            code.match_indices(word).any(|(i, _)| {
+                let before = code[..i].chars().next_back();
+                let after = code[i + word.len()..].chars().next();
+                let whole =
+                    |c: Option<char>, edge: char| !edge.is_alphanumeric() || !c.is_some_and(ident);
+                whole(before, word.chars().next().unwrap_or(' '))
+                    && whole(after, word.chars().next_back().unwrap_or(' '))
+            })
+        })
+        .collect()
+}
+
+#[test]
+fn the_wasm_layer_reaches_nothing_past_the_session_and_the_screen() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../wasm/src");
+    let mut files = Vec::new();
+    rust_files(&dir, &mut files);
+    assert!(files.len() >= 5, "{files:?}");
+    let found: Vec<String> = files
+        .iter()
+        .filter_map(|f| {
+            let words = past_the_boundary(&std::fs::read_to_string(f).unwrap());
+            (!words.is_empty()).then(|| format!("{}: {words:?}", f.display()))
+        })
+        .collect();
+    assert!(
+        found.is_empty(),
+        "the wasm layer reaches past Session: {found:?}"
+    );
+    // The check can fail: each kind of reach is found.
+    let reach = "fn f(d: &Demo) { d.session.system().wiring(); }\n\
+                 fn g(m: &Mission) {}\nfn h() { let v = serde_json::json!({}); }";
+    assert_eq!(
+        past_the_boundary(reach),
+        [".system()", "Mission", "serde_json::json!"]
+    );
+    assert_eq!(
+        past_the_boundary("fn f() -> SystemGraph {}\n// System"),
+        Vec::<&str>::new()
+    );
+}

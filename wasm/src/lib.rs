@@ -1,8 +1,10 @@
-//! `rtnav-wasm`: the browser's handle over `rtnav` (no logic of its own).
+//! `rtnav-wasm`: the browser's handle over `rtnav` (no logic of its own: every call is one
+//! call into the core's [`Session`](rtnav::system::Session) or its
+//! [`Screen`](rtnav::render::Screen); `core/tests/tidy.rs` checks that nothing here reaches
+//! past them).
 //!
 //! Long-lived state lives here, in Rust memory; JavaScript holds an opaque handle
-//! ([`Demo`], a newtype over the whole [`System`](rtnav::system::System) and its
-//! [`Renderer`](rtnav::render::Renderer)), owns the clock (`requestAnimationFrame`) and
+//! ([`Demo`]: the session and its screen), owns the clock (`requestAnimationFrame`) and
 //! calls [`Demo::step`] with the elapsed wall time, which becomes whole ticks of simulated
 //! time (spec §6: components never read a clock). The frame is drawn into Rust memory and
 //! shown by the page without a copy: a `Uint8ClampedArray` view at [`Demo::frame_ptr`] over
@@ -19,17 +21,17 @@ use std::sync::Mutex;
 
 use wasm_bindgen::prelude::*;
 
+mod as_json;
 mod demo;
-mod exercise;
 mod files;
 mod refusal;
 mod replay;
 mod system_view;
 mod teach;
-mod views;
 
 pub use demo::Demo;
 pub use files::Files;
+pub use replay::CompareView;
 
 /// The first panic's message, recorded by the hook.
 static PANIC_MESSAGE: Mutex<Option<String>> = Mutex::new(None);
@@ -65,4 +67,4 @@ pub fn panic_message() -> Option<String> {
         .clone()
 }
 
-pub(crate) use refusal::{Msg, PageError, js, msg, refused};
+pub(crate) use refusal::{Msg, js, msg, refused, value};

@@ -1,83 +1,22 @@
 //! What the page is told when a request is refused ([`Refusal`]): the English words and the
-//! error as data — the core's [`rtnav::ErrorDetail`], or a [`PageError`] of this layer's
-//! own (a picked file it cannot use) — made a JavaScript `Error` with a `detail` by [`js`].
+//! error as data — the core's [`rtnav::ErrorDetail`] — made a JavaScript `Error` with a
+//! `detail` by [`js`].
 
 use wasm_bindgen::prelude::*;
-
-/// What the page expects to be picked as a map.
-pub(crate) const EXPECTED: &str = "expected an rtnav JSON map (.json), a ROS map (its .yaml \
-                                   and its .pgm or .png image, picked together) or a MovingAI \
-                                   map (.map)";
-
-/// A request of this layer's own that is refused (area `Page` in the detail): the files a
-/// user picked, the page's arrays and layer names. `PageError::VARIANTS` lists every kind.
-#[derive(
-    Debug,
-    Clone,
-    PartialEq,
-    thiserror::Error,
-    serde::Serialize,
-    strum::VariantNames,
-    strum::IntoStaticStr,
-)]
-#[serde(tag = "kind")]
-pub(crate) enum PageError {
-    /// No file picked.
-    #[error("no file chosen: {EXPECTED}")]
-    NoFile,
-    /// A file whose name says no map format.
-    #[error("`{name}` is not a map file I know: {EXPECTED}")]
-    UnknownFile { name: String },
-    /// A ROS YAML file that is not UTF-8.
-    #[error("`{name}` is not text: {reason}")]
-    NotText { name: String, reason: String },
-    /// A ROS YAML file picked without its image.
-    #[error("`{name}` names the image `{image}`: pick it together with the YAML file")]
-    MissingImage { name: String, image: String },
-    /// More than one map picked (other than a YAML file and its image).
-    #[error("{count} files chosen: {EXPECTED}")]
-    FileCount { count: usize },
-    /// A MovingAI cell size that is not positive.
-    #[error("MovingAI cell size {value} m must be positive")]
-    BadCellSize { value: f64 },
-    /// A ROS image picked without its YAML file.
-    #[error("`{name}` is an image: a ROS map needs its .yaml file too (pick both)")]
-    ImageOnly { name: String },
-    /// `set_cells` with lists of different lengths.
-    #[error("MapUpdate: {xs} x indices but {ys} y indices")]
-    CellLists { xs: usize, ys: usize },
-    /// A layer name the renderer does not have.
-    #[error("no layer named `{name}` (layers: {known})")]
-    UnknownLayer { name: String, known: String },
-}
 
 /// A result whose error is what the page shows. Kept apart from `JsValue` (which exists
 /// only in a browser) so the native tests can check the exact words.
 pub(crate) type Msg<T> = Result<T, Refusal>;
 
-/// A refusal: the core's English words, and — when the core refused — the error as data
-/// ([`rtnav::ErrorDetail`]: `{area, kind, fields}`) for the page to say in its language,
-/// with the file or scenario it was about.
+/// A refusal: the English words, and — when the core refused — the core's
+/// [`rtnav::system::Refusal`] (`{area, kind, fields, file?, scenario?}`) for the page to
+/// say in its language.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Refusal {
     /// The English words (the error's `Display`).
     pub message: String,
-    /// The error as data, with `file` or `scenario` when the words start with one.
-    pub detail: Option<serde_json::Value>,
-}
-
-impl Refusal {
-    /// The refusal about `what` (`file` or `scenario`) named `name`: the words start with it.
-    pub(crate) fn about(mut self, what: &str, name: &str) -> Self {
-        self.message = match what {
-            "scenario" => format!("scenario `{name}`: {}", self.message),
-            _ => format!("`{name}`: {}", self.message),
-        };
-        if let Some(serde_json::Value::Object(d)) = &mut self.detail {
-            d.insert(what.to_owned(), serde_json::Value::String(name.to_owned()));
-        }
-        self
-    }
+    /// The error as data.
+    pub detail: Option<Box<rtnav::system::Refusal>>,
 }
 
 impl From<String> for Refusal {
@@ -89,12 +28,24 @@ impl From<String> for Refusal {
     }
 }
 
+impl From<rtnav::system::Refusal> for Refusal {
+    fn from(r: rtnav::system::Refusal) -> Self {
+        Self {
+            message: r.message.clone(),
+            detail: Some(Box::new(r)),
+        }
+    }
+}
+
 impl From<rtnav::Error> for Refusal {
     fn from(e: rtnav::Error) -> Self {
-        Self {
-            message: e.to_string(),
-            detail: serde_json::to_value(e.detail()).ok(),
-        }
+        rtnav::system::Refusal::from(e).into()
+    }
+}
+
+impl From<rtnav::system::PickError> for Refusal {
+    fn from(e: rtnav::system::PickError) -> Self {
+        rtnav::system::Refusal::from(e).into()
     }
 }
 
@@ -117,31 +68,21 @@ impl PartialEq<&str> for Refusal {
     }
 }
 
-impl From<PageError> for Refusal {
-    fn from(e: PageError) -> Self {
-        let fields = match serde_json::to_value(&e) {
-            Ok(serde_json::Value::Object(mut m)) => {
-                m.remove("kind");
-                serde_json::Value::Object(m)
-            }
-            _ => serde_json::Value::Object(serde_json::Map::new()),
-        };
-        let kind: &'static str = (&e).into();
-        Self {
-            message: e.to_string(),
-            detail: Some(serde_json::json!({"area": "Page", "kind": kind, "fields": fields})),
-        }
-    }
-}
-
 /// A refusal of the core's, with its detail.
 pub(crate) fn refused(e: impl Into<rtnav::Error>) -> Refusal {
     Refusal::from(e.into())
 }
 
-/// A message without detail (an error that is not the core's: JSON, UTF-8).
+/// A message without detail (an error that is not the core's: JSON).
 pub(crate) fn msg(e: impl std::fmt::Display) -> Refusal {
     Refusal::from(e.to_string())
+}
+
+/// A core's view as a JavaScript value (its serde JSON, parsed by the engine's
+/// `JSON.parse`: one pass each way, as fast as handing the text over).
+pub(crate) fn value<T: serde::Serialize>(v: &T) -> Result<JsValue, JsValue> {
+    let text = serde_json::to_string(v).map_err(|e| js(msg(e)))?;
+    json_parse(&text)
 }
 
 #[wasm_bindgen]
@@ -156,8 +97,7 @@ extern "C" {
 /// data (`{area, kind, fields, file?, scenario?}`) when the core refused.
 pub(crate) fn js(e: Refusal) -> JsValue {
     let error: JsValue = JsError::new(&e.message).into();
-    let detail = e.detail.and_then(|d| serde_json::to_string(&d).ok());
-    if let Some(Ok(detail)) = detail.map(|d| json_parse(&d)) {
+    if let Some(Ok(detail)) = e.detail.map(|d| value(&d)) {
         reflect_set(&error, &JsValue::from_str("detail"), &detail);
     }
     error
@@ -184,10 +124,10 @@ mod tests {
 
     /// The keys the page says the core's facts with, from the code's own lists:
     /// `event.<Kind>` for every [`EventKind`], `error.<Area>.<Kind>` for every
-    /// [`rtnav::Error::KINDS`] and every [`PageError`], `rtcstatus.<kind>` for every
-    /// [`ComponentActivity`], `held.<flag>` for every [`Held`], `reason.<kind>` for every
-    /// [`rtnav::Reason`], `warning.<kind>` for every [`ParameterWarning`], `input.<Kind>` for
-    /// every [`InputSummary`], `source.<Source>` for every [`RequestSource`] and
+    /// [`rtnav::Error::KINDS`], `rtcstatus.<kind>` for every [`ComponentActivity`],
+    /// `held.<flag>` for every [`Held`], `reason.<kind>` for every [`rtnav::Reason`],
+    /// `warning.<kind>` for every [`ParameterWarning`], `input.<Kind>` for every
+    /// [`InputSummary`], `source.<Source>` for every [`RequestSource`] and
     /// `rtcstatus.zero.<output>` for every [`ZeroOutput`].
     fn wanted() -> Vec<String> {
         let lists: [(&str, &[&str]); 8] = [
@@ -207,11 +147,6 @@ mod tests {
         for (area, kinds) in rtnav::Error::KINDS {
             keys.extend(kinds.iter().map(|k| format!("error.{area}.{k}")));
         }
-        keys.extend(
-            PageError::VARIANTS
-                .iter()
-                .map(|k| format!("error.Page.{k}")),
-        );
         keys
     }
 
@@ -256,7 +191,7 @@ mod tests {
         );
     }
 
-    /// A refusal of the core's carries its detail; the page's own carry area `Page`.
+    /// A refusal of the core's carries its detail; a picked file's names the file.
     #[test]
     fn refusals_carry_their_detail() {
         let r = refused(rtnav::errors::SessionError::BadSpeed {
@@ -266,19 +201,28 @@ mod tests {
         });
         assert_eq!(r, "speed 32× is outside 0.25× to 16×");
         assert_eq!(
-            r.detail,
-            Some(serde_json::json!({"area": "Session", "kind": "BadSpeed",
+            serde_json::to_value(r.detail).unwrap(),
+            (serde_json::json!({"area": "Session", "kind": "BadSpeed",
                                     "fields": {"speed": 32.0, "min": 0.25, "max": 16.0}}))
         );
-        let p = Refusal::from(PageError::FileCount { count: 2 });
+        let p = refused(rtnav::errors::SessionError::FileCount { count: 2 });
         assert!(p.message.starts_with("2 files chosen: expected"), "{p}");
         assert_eq!(
-            p.detail,
-            Some(serde_json::json!({"area": "Page", "kind": "FileCount", "fields": {"count": 2}}))
+            serde_json::to_value(p.detail).unwrap(),
+            (serde_json::json!({"area": "Session", "kind": "FileCount",
+                                    "fields": {"count": 2}}))
         );
-        let f = refused(rtnav::errors::GlobalPlanningError::NoMap).about("file", "a.json");
-        assert_eq!(f, "`a.json`: no map has been set");
-        assert_eq!(f.detail.unwrap()["file"], "a.json");
+        let mut broken = rtnav::system::PickedFiles::new();
+        broken.add("broken.json", b"{\"width\": 3".to_vec());
+        let picked = Refusal::from(broken.load_map(1.0).unwrap_err());
+        assert!(
+            picked.message.starts_with("`broken.json`: rtnav JSON"),
+            "{picked}"
+        );
+        assert_eq!(
+            serde_json::to_value(picked.detail).unwrap()["file"],
+            "broken.json"
+        );
         assert_eq!(msg("plain").detail, None);
     }
 }

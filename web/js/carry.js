@@ -1,3 +1,4 @@
+// @ts-check
 // The run carried across a change of language. Switching English ↔ 日本語 reloads the page
 // (every string is drawn anew in the other language); what the robot did must not be lost
 // with it. Before the reload the session's replay (`demo.replay_json()`: the set-up and every
@@ -19,6 +20,11 @@ const FRESH_MS = 60_000;
  * loaded from a file cannot be carried, and they were asked), else true — with `share`, a
  * set-up token to put in the address when the run could not be kept (storage blocked).
  */
+/**
+ * @param {App} app
+ * @param {string} lang
+ * @param {{confirm?: (text: string) => boolean}} [options]
+ */
 export function keepRun(app, lang, { confirm = (text) => window.confirm(text) } = {}) {
   const { demo } = app;
   drop();
@@ -27,7 +33,7 @@ export function keepRun(app, lang, { confirm = (text) => window.confirm(text) } 
     return { go: confirm(t('carry.map_file')) };
   }
   const replay = app.attempt(() => demo.replay_json());
-  const layers = app.attempt(() => JSON.parse(demo.layers_json()));
+  const layers = app.attempt(() => demo.layers());
   const carried = replay.ok && {
     lang,
     at: Date.now(),
@@ -54,6 +60,7 @@ function drop() {
 }
 
 /** The run kept for this load in `lang` (taken: a second load does not replay it), or null. */
+/** @param {string} lang */
 export function takeRun(lang) {
   let carried = null;
   try {
@@ -70,6 +77,10 @@ export function takeRun(lang) {
  * Replays a carried run on its scenario (the index must be read) and puts the page back as it
  * was. Returns whether it did; when it did not, the reason is in the notice and the log.
  */
+/**
+ * @param {App} app
+ * @param {{replay: string, layers?: Record<string, boolean>, [k: string]: any}} carried
+ */
 export async function restoreRun(app, carried) {
   const { demo } = app;
   let name;
@@ -79,7 +90,7 @@ export async function restoreRun(app, carried) {
     return failed(app, errorText(e));
   }
   if (name === undefined || !(await app.scenarios.load(name))) return false;
-  const r = app.attempt(() => JSON.parse(demo.load_replay(carried.replay)));
+  const r = app.attempt(() => demo.load_replay(carried.replay));
   if (!r.ok) return failed(app, r.error);
   demo.set_paused(Boolean(carried.paused));
   app.attempt(() => demo.set_speed(carried.speed));
@@ -97,6 +108,7 @@ export async function restoreRun(app, carried) {
   return true;
 }
 
+/** @param {App} app @param {string} error */
 function failed(app, error) {
   app.notice.show(t('carry.failed', { error }), 'error');
   app.log.page(t('carry.failed', { error }), 'error');

@@ -70,7 +70,7 @@ export function createCompare(formRoot, viewRoot, app) {
   viewRoot.hidden = true;
 
   function fillParams() {
-    const r = app.attempt(() => JSON.parse(demo.params_json()));
+    const r = app.attempt(() => demo.params());
     if (!r.ok) return;
     const keep = select.value;
     select.replaceChildren(...r.value.flatMap((c) => c.params.map((p) => el('option', {
@@ -101,21 +101,21 @@ export function createCompare(formRoot, viewRoot, app) {
     current = r.value;
     say('', 'info');
     show(current, `${name} = ${text.trim()}`);
-    return JSON.parse(current.table_json());
+    return current.table();
   }
 
   function show(view, what) {
     view.render();
     const bytes = new Uint8ClampedArray(app.memory.buffer, view.frame_ptr(), view.frame_len());
     canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(bytes), WIDTH, HEIGHT), 0, 0);
-    const data = JSON.parse(view.table_json());
+    const data = view.table();
     title.textContent = t('compare.title_on', { scenario: scenarioTitle(data.scenario), what });
     table.replaceChildren(
       el('thead', {}, el('tr', {}, el('th', {}, ''), el('th', {}, 'A'), el('th', {}, t('compare.col.b')))),
       el('tbody', {}, ...data.rows.map(([m, a, b]) => el('tr', { dataset: { measure: m } },
         el('th', { scope: 'row' }, ROWS[m] ?? m), el('td', {}, cell(m, a, data.a)), el('td', {}, cell(m, b, data.b))))),
     );
-    drawPlot(JSON.parse(view.plots_json()));
+    drawPlot(view.plots());
     viewRoot.hidden = false;
     viewRoot.scrollIntoView({ block: 'nearest' });
   }

@@ -1,3 +1,4 @@
+// @ts-check
 // Shows a Rust panic instead of a frozen tab (egui's WebHandle style).
 //
 // After a panic the wasm instance must not be used: the object that panicked stays borrowed
@@ -6,13 +7,24 @@
 import { has_panicked, panic_message } from '../pkg/rtnav_wasm.js';
 import { t } from './i18n.js';
 
+/**
+ * @param {HTMLElement} box
+ * @param {HTMLElement} messageEl
+ * @returns {App['guard']}
+ */
 export function createCrashGuard(box, messageEl) {
+  /** @type {Array<() => void>} */
   const listeners = [];
   const guard = {
     crashed: false,
 
     // Runs `fn`; if Rust panicked, shows the crash and returns undefined. Other errors
     // (an illegal request, a refused value) are thrown on to the caller.
+    /**
+     * @template T
+     * @param {() => T} fn
+     * @returns {T | undefined}
+     */
     call(fn) {
       if (guard.crashed) return undefined;
       try {
@@ -35,6 +47,7 @@ export function createCrashGuard(box, messageEl) {
       return true;
     },
 
+    /** @param {() => void} listener */
     onCrash(listener) {
       listeners.push(listener);
     },

@@ -127,6 +127,8 @@ export function translateStatic(root = document) {
 /**
  * Keeps `next` and reloads the page in it, with `share` (a set-up token) if given; without
  * one, the address names no set-up (the run itself is carried: `carry.js`).
+ * @param {string} next
+ * @param {string | null} [share]
  */
 export function switchLanguage(next, share = null) {
   try { localStorage.setItem(STORAGE_KEY, next); } catch { /* not kept: the address says it */ }

@@ -51,7 +51,7 @@ export function createLegend(details, body, canvas, app) {
   let lastScale = '';
 
   function showLayers() {
-    const layers = JSON.parse(demo.layers_json());
+    const layers = demo.layers();
     for (const row of rows) row.hidden = !layers[row.dataset.layer];
     heat.hidden = !layers.heat_map;
   }

@@ -41,8 +41,8 @@ export function createScenarios(dom, app) {
   let current = null;
 
   function showAbout() {
-    const s = JSON.parse(demo.scenario_json());
-    const map = JSON.parse(demo.map_json());
+    const s = demo.scenario();
+    const map = demo.map();
     if (s) {
       dom.title.textContent = t('scenarios.about', { name: scenarioTitle(s.name) });
       dom.description.textContent = scenarioText(s, 'description');
@@ -162,7 +162,7 @@ export function createScenarios(dom, app) {
     }
     current = null;
     dom.select.value = CUSTOM;
-    const map = JSON.parse(demo.map_json());
+    const map = demo.map();
     custom.textContent = t('scenarios.map_file_named', { name: map.name });
     app.emit('tool', 'start');
     loaded(t('scenarios.map_loaded', { name: map.name, width: map.width, height: map.height, grid: map.grid_size }));
@@ -185,6 +185,8 @@ export function createScenarios(dom, app) {
      * Reads the index, fills the picker and loads: the run `carried()` restores (a run
      * carried from the other language) if it does, else the set-up of the share link
      * `share` if given and good, else the default scenario.
+     * @param {string | null} [share]
+     * @param {(() => unknown) | null} [carried]
      */
     async loadDefault(share = null, carried = null) {
       index = JSON.parse(await fetchOk(INDEX_URL, 'text'));

@@ -110,8 +110,9 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   // ------------------------------------------------------------------ requests
 
-  const telemetry = () => JSON.parse(demo.telemetry_json());
-  const plan = () => JSON.parse(demo.plan_json());
+  // What a request needs to know now (after the requests since the last frame).
+  const driving = () => demo.telemetry().driving;
+  const plan = () => demo.plan();
   const fmt = (p) => `(${fixed(p.x, 2)} m, ${fixed(p.y, 2)} m, ${fixed(p.theta_deg, 0)}°)`;
 
   function refused(what, error, kept) {
@@ -122,8 +123,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   /** A new goal: from the robot while it drives, else from its start (or a waiting start). */
   function setGoal(goal) {
     const ps = app.ui.pendingStart;
-    const driving = telemetry().driving;
-    const r = ps && !driving
+    const r = ps && !driving()
       ? app.attempt(() => demo.set_position(ps.x, ps.y, ps.theta_deg, goal.x, goal.y, goal.theta_deg, app.ui.backward))
       : app.attempt(() => demo.set_goal(goal.x, goal.y, goal.theta_deg, app.ui.backward));
     if (!r.ok) {
@@ -138,7 +138,7 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   /** Places the robot (SetPosition with the current goal); without a goal, waits for one. */
   function setStart(start) {
-    if (telemetry().driving) {
+    if (driving()) {
       app.notice.show(t('stage.driving'), 'warn');
       return false;
     }
@@ -165,9 +165,10 @@ export function createStage(wrap, view, overlay, hint, app) {
     const p = plan();
     if (!p.goal) return;
     const g = p.goal;
-    const r = telemetry().driving || !p.start
+    const start = p.start;
+    const r = driving() || !start
       ? app.attempt(() => demo.set_goal(g.x, g.y, g.theta_deg, app.ui.backward))
-      : app.attempt(() => demo.set_position(p.start.x, p.start.y, p.start.theta_deg, g.x, g.y, g.theta_deg, app.ui.backward));
+      : app.attempt(() => demo.set_position(start.x, start.y, start.theta_deg, g.x, g.y, g.theta_deg, app.ui.backward));
     if (r.ok) {
       app.notice.show(t('stage.driving_to', { dir: t(app.ui.backward ? 'stage.backward' : 'stage.forward') }), 'success');
     } else {
@@ -180,31 +181,14 @@ export function createStage(wrap, view, overlay, hint, app) {
   /**
    * The cells the brush covers with its centre at world point `(wx, wy)`: in cells, the
    * n×n cells around the cell under it; in metres, the cells whose centre lies inside the
-   * square of that side (at least the cell under it).
+   * square of that side (at least the cell under it) — the core's (`Session::brush_cells`).
    */
   function brushCells(wx, wy) {
-    if (!map) return [];
-    const g = map.grid_size;
-    const [ox, oy] = map.origin;
-    const cx = Math.floor((wx - ox) / g);
-    const cy = Math.floor((wy - oy) / g);
-    const out = [];
-    const add = (x, y) => {
-      if (x >= 0 && y >= 0 && x < map.width && y < map.height) out.push([x, y]);
-    };
     const { size, unit } = app.ui.brush;
-    if (unit === 'm') {
-      const half = size / 2;
-      const x0 = Math.ceil((wx - half - ox) / g - 0.5);
-      const x1 = Math.floor((wx + half - ox) / g - 0.5);
-      const y0 = Math.ceil((wy - half - oy) / g - 0.5);
-      const y1 = Math.floor((wy + half - oy) / g - 0.5);
-      for (let y = y0; y <= y1; y++) for (let x = x0; x <= x1; x++) add(x, y);
-      if (out.length === 0) add(cx, cy);
-      return out;
-    }
-    const r = Math.floor((size - 1) / 2);
-    for (let dy = -r; dy <= size - 1 - r; dy++) for (let dx = -r; dx <= size - 1 - r; dx++) add(cx + dx, cy + dy);
+    const flat = demo.brush_cells(wx, wy, size, unit === 'm');
+    /** @type {Array<[number, number]>} */
+    const out = [];
+    for (let i = 0; i + 1 < flat.length; i += 2) out.push([flat[i], flat[i + 1]]);
     return out;
   }
 
@@ -483,8 +467,8 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   /** The robot's body on the page (client coordinates), or null when it is not drawn. */
   function robotBox() {
-    if (!map) return null;
-    const t = telemetry();
+    const t = app.frame?.telemetry;
+    if (!map || !t) return null;
     if (!t.start && !t.driving) return null;
     const p = demo.world_to_pixel(t.pose.x, t.pose.y);
     if (!p) return null;
@@ -506,7 +490,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   /** The goal's marker on the page (client coordinates), or null when there is none. */
   function goalBox() {
     if (!map) return null;
-    const goal = telemetry().goal;
+    const goal = app.frame?.telemetry.goal;
     const p = goal && demo.world_to_pixel(goal.x, goal.y);
     if (!p) return null;
     const r = overlay.getBoundingClientRect();
@@ -533,7 +517,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   setTool(app.ui.tool);
 
   app.on('loaded', () => {
-    map = JSON.parse(demo.map_json());
+    map = demo.map();
     fitHeight();
     app.ui.pendingStart = null;
     drag = null;

@@ -42,13 +42,16 @@ pub fn assemble(dir: &Path) -> Result {
         std::fs::remove_dir_all(dir).map_err(|e| format!("cannot empty {}: {e}", dir.display()))?;
     }
     std::fs::create_dir_all(dir)?;
-    // The page's own files: everything under web/ but what xtask makes there.
+    // The page's own files: everything under web/ but what xtask makes there and what only
+    // the type check reads (the declarations, the TypeScript configuration).
     copy_tree(&web, dir, &|rel: &Path| {
         let first = rel.components().next().map(|c| c.as_os_str().to_owned());
-        !first.is_some_and(|f| f == "pkg" || f == "fixtures" || f == "node_modules")
-            && !rel
-                .file_name()
-                .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        let only_typing = |f: &std::ffi::OsString| f == "types" || f == "tsconfig.json";
+        !first.is_some_and(|f| {
+            f == "pkg" || f == "fixtures" || f == "node_modules" || only_typing(&f)
+        }) && !rel
+            .file_name()
+            .is_some_and(|n| n.to_string_lossy().starts_with('.'))
     })?;
     let pkg = dir.join("pkg");
     std::fs::create_dir_all(&pkg)?;

@@ -11,6 +11,7 @@
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test [--stage WORD]  every check CI runs (or those named), with a summary
+//! cargo xtask types               write web/types from the Rust views, type-check the page
 //! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
 //! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
@@ -25,6 +26,7 @@ mod serve;
 mod soak;
 mod test;
 mod tools;
+mod types;
 mod wasm;
 
 use std::path::PathBuf;
@@ -46,6 +48,8 @@ commands:
   serve [--port N]     copy the fixtures and serve web/ without building
   dist [DIR]           build the wasm and write the page, the wasm and the scenarios
                        as a static folder for any static host (default dist/)
+  types                write web/types/core.d.ts from the core's view types and
+                       type-check the page's JavaScript against it (tsc, strict)
   bench [--no-wasm] [--no-browser]
                        the performance table of docs/performance.md: criterion benches
                        with their baselines, the same operations in wasm32 under Node,
@@ -53,7 +57,8 @@ commands:
   test [--stage WORD]...
                        cargo test, clippy (native and wasm32), rustfmt, the fuzz stage
                        (every reader of untrusted input for a time budget, fresh seed),
-                       a one-hour soak, the wasm tests under Node, the page's build and
+                       a one-hour soak, the wasm tests under Node, the page's build, its
+                       type check and
                        the browser end-to-end tests (against the dist folder, served under
                        a sub-path); --stage runs only the stages whose name has WORD
   fuzz [--seconds N] [--seed S] [--target NAME]...
@@ -139,6 +144,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             }
             return Ok(test::run_all(&only));
         }
+        "types" => types::types()?,
         "bench" => bench::run_all(rest)?,
         "fuzz" => fuzz::fuzz(rest)?,
         "soak" => soak::soak(rest)?,

@@ -64,6 +64,11 @@ const STAGES: &[Stage] = &[
         needs_downloads: true,
     },
     Stage {
+        name: "the page's types (declarations from Rust, tsc strict)",
+        run: crate::types::test_stage,
+        needs_downloads: true,
+    },
+    Stage {
         name: "browser end-to-end (dist under /rtnav/)",
         run: e2e,
         needs_downloads: true,

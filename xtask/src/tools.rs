@@ -239,6 +239,35 @@ pub fn ensure_wasm_opt() -> Result<PathBuf> {
     }
 }
 
+/// TypeScript's `tsc` from npm (the `typescript` package at the version pinned in
+/// `xtask/npm/package.json`, installed from its lockfile with `npm ci` unless
+/// `tsc --version` already says that version). Returns the program's path.
+pub fn ensure_tsc() -> Result<PathBuf> {
+    let dir = npm_tools_dir();
+    let program = dir.join("node_modules").join(".bin").join("tsc");
+    let wanted = format!("Version {}", npm_pinned("typescript")?);
+    let have = output_of(&program.to_string_lossy(), &["--version"]);
+    if have.as_deref().is_some_and(|v| v.trim() == wanted) {
+        return Ok(program);
+    }
+    ensure_node()?;
+    println!(
+        "xtask: installing TypeScript ({wanted}) from npm into {}",
+        dir.display()
+    );
+    run(cmd("npm")
+        .args(["ci", "--no-audit", "--no-fund"])
+        .current_dir(&dir))?;
+    match output_of(&program.to_string_lossy(), &["--version"]) {
+        Some(v) if v.trim() == wanted => Ok(program),
+        other => Err(format!(
+            "{} says {other:?} after `npm ci`, expected {wanted}",
+            program.display()
+        )
+        .into()),
+    }
+}
+
 static APT_UPDATED: AtomicBool = AtomicBool::new(false);
 
 /// `apt-get`, through `sudo` unless we are root, waiting for another apt to finish.

@@ -161,9 +161,7 @@ pub fn build_pkg(profile: Profile) -> Result<Built> {
         std::fs::remove_dir_all(&out)?;
     }
     let mut bindgen = cmd("wasm-bindgen");
-    bindgen
-        .args(["--target", "web", "--no-typescript", "--out-dir"])
-        .arg(&out);
+    bindgen.args(["--target", "web", "--out-dir"]).arg(&out);
     if profile == Profile::Release {
         bindgen.args(["--remove-name-section", "--remove-producers-section"]);
     } else {

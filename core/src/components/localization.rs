@@ -27,6 +27,7 @@ use crate::rtc::{
 
 /// Where the published pose comes from (`LocalizationMode`).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum LocalizationMode {
     /// 0: the simulated pose (ground truth).
     #[default]

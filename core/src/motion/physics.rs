@@ -257,6 +257,7 @@ pub struct PhysicsState {
 
 /// A bump (spec §5 "touching an obstacle cell is a bump"): who hit what, where, when.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct BumpReport {
     /// Simulated time of the bump.
     pub tm: Time,

@@ -63,6 +63,14 @@ pub enum RenderError {
     /// A system to draw before a map is loaded.
     #[error("nothing to draw: no map is loaded")]
     NoMap,
+    /// A layer name the renderer does not have.
+    #[error("no layer named `{name}` (layers: {known})")]
+    UnknownLayer {
+        /// The name asked for.
+        name: String,
+        /// The layers there are, comma-separated.
+        known: String,
+    },
 }
 
 fn at_index(index: Option<usize>) -> String {

@@ -30,6 +30,7 @@ mod panel;
 mod raster;
 mod renderer;
 mod scene;
+mod screen;
 mod style;
 mod view;
 
@@ -37,4 +38,5 @@ pub use frame::Frame;
 pub use of_system::{FieldBuffers, caption, ghost_of, scene_of};
 pub use renderer::Renderer;
 pub use scene::{FieldCellState, FieldView, Ghost, Layers, RobotView, Scene};
+pub use screen::{PAGE_LAYERS, Screen};
 pub use view::{Camera, MAX_FRAME_SIDE, MAX_ZOOM, ViewTransform};

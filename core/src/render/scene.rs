@@ -65,6 +65,7 @@ impl RobotView {
 
 /// Which layers to draw. Every layer is on by default; in serde form a missing field is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(default, deny_unknown_fields)]
 pub struct Layers {
     /// Obstacle cells.
@@ -129,6 +130,45 @@ impl Layers {
         legend: false,
         caption: false,
     };
+}
+
+impl Layers {
+    /// Every layer's name (as serialized) and where its switch is.
+    fn switches(&mut self) -> [(&'static str, &mut bool); 13] {
+        [
+            ("occupancy", &mut self.occupancy),
+            ("dmin_zone", &mut self.dmin_zone),
+            ("heat_map", &mut self.heat_map),
+            ("global_path", &mut self.global_path),
+            ("local_path", &mut self.local_path),
+            ("control_points", &mut self.control_points),
+            ("local_target", &mut self.local_target),
+            ("robot", &mut self.robot),
+            ("trail", &mut self.trail),
+            ("start_goal", &mut self.start_goal),
+            ("scale_bar", &mut self.scale_bar),
+            ("legend", &mut self.legend),
+            ("caption", &mut self.caption),
+        ]
+    }
+
+    /// Shows (`on`) or hides the layer `name` (`heat_map`, `trail`, …); an unknown name is
+    /// refused and nothing changes.
+    pub fn set(&mut self, name: &str, on: bool) -> Result<(), crate::errors::RenderError> {
+        let mut switches = self.switches();
+        let known: Vec<&str> = switches.iter().map(|(n, _)| *n).collect();
+        let known = known.join(", ");
+        match switches.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, switch)) => {
+                **switch = on;
+                Ok(())
+            }
+            None => Err(crate::errors::RenderError::UnknownLayer {
+                name: name.to_owned(),
+                known,
+            }),
+        }
+    }
 }
 
 impl Default for Layers {

@@ -10,6 +10,7 @@ const NANOS_PER_SEC: u64 = 1_000_000_000;
 #[derive(
     Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize,
 )]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct Time {
     /// Whole seconds.
     pub sec: u32,

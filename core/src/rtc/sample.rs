@@ -45,6 +45,7 @@ pub fn short_list(values: &[f64], max: usize) -> String {
 
 /// The newest sample of a port, for people.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct SampleView {
     /// Its timestamp \[s\], if it has one.
     pub tm: Option<f64>,

@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 /// `Inactive`, `Active` and `Error` are the three sub-states of `Alive`; the RT System Editor
 /// draws them blue, green and red.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum LifecycleState {
     /// Created, but `on_initialize` has not succeeded.
     Created,

@@ -31,6 +31,7 @@ use crate::rtc::LifecycleState;
     strum(serialize_all = "snake_case")
 )]
 #[non_exhaustive]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum ComponentActivity {
     /// In Error: it does not execute (spec §1) until a reset.
     InError {
@@ -130,6 +131,7 @@ pub enum ComponentActivity {
 
 /// What a safe stop holds at zero.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, strum::VariantNames)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 #[strum(serialize_all = "snake_case")]
 pub enum ZeroOutput {
@@ -141,6 +143,7 @@ pub enum ZeroOutput {
 
 /// One of LocalPathPlanning's held flags (000 §5.2.4) that the RTC panel lists.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, strum::VariantNames)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 #[strum(serialize_all = "snake_case")]
 pub enum Held {

@@ -22,6 +22,7 @@ use crate::errors::ScenarioError;
 
 /// One run's measures (a column of the table).
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct RunSummary {
     /// The configuration in words (`PostureConsiderationLevel=85`, or `as written`).
     pub label: String,
@@ -54,6 +55,7 @@ pub struct RunSummary {
 
 /// Speeds over time of both runs (the overlaid plots).
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ComparePlots {
     /// Time since the activation, run A \[s\].
     pub t_a: Vec<f64>,
@@ -67,6 +69,20 @@ pub struct ComparePlots {
     pub v_b: Vec<f64>,
     /// Turn rate, run B \[rad/s\].
     pub w_b: Vec<f64>,
+}
+
+/// The compare view's table.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
+pub struct CompareTable {
+    /// The scenario.
+    pub scenario: String,
+    /// `[measure, A, B]` in words.
+    pub rows: Vec<[String; 3]>,
+    /// Run A's measures.
+    pub a: RunSummary,
+    /// Run B's measures.
+    pub b: RunSummary,
 }
 
 /// Two runs of one scenario (module documentation).
@@ -215,6 +231,16 @@ impl Comparison {
     /// Run B's system at its end (drawn as the ghost).
     pub fn system_b(&self) -> &System {
         &self.b.1
+    }
+
+    /// The table: the scenario, the rows `[measure, A, B]` and both runs' measures.
+    pub fn table(&self) -> CompareTable {
+        CompareTable {
+            scenario: self.scenario.clone(),
+            rows: self.rows(),
+            a: self.a.0.clone(),
+            b: self.b.0.clone(),
+        }
     }
 
     /// Speed and turn rate over time of both runs.

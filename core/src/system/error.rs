@@ -209,7 +209,63 @@ pub enum SessionError {
         /// The fastest.
         max: f64,
     },
+    /// No file picked as a map.
+    #[error("no file chosen: {MAP_FILES_EXPECTED}")]
+    NoFile,
+    /// A picked file whose name and first bytes say no map format.
+    #[error("`{name}` is not a map file I know: {MAP_FILES_EXPECTED}")]
+    UnknownFile {
+        /// The file's name.
+        name: String,
+    },
+    /// A picked ROS YAML file that is not UTF-8.
+    #[error("`{name}` is not text: {reason}")]
+    NotText {
+        /// The file's name.
+        name: String,
+        /// Why.
+        reason: String,
+    },
+    /// A ROS YAML file picked without its image.
+    #[error("`{name}` names the image `{image}`: pick it together with the YAML file")]
+    MissingImage {
+        /// The YAML file's name.
+        name: String,
+        /// The image it names.
+        image: String,
+    },
+    /// More than one map picked (other than a YAML file and its image).
+    #[error("{count} files chosen: {MAP_FILES_EXPECTED}")]
+    FileCount {
+        /// How many.
+        count: usize,
+    },
+    /// A MovingAI cell size that is not positive.
+    #[error("MovingAI cell size {value} m must be positive")]
+    BadCellSize {
+        /// The size asked for \[m\].
+        value: f64,
+    },
+    /// A ROS image picked without its YAML file.
+    #[error("`{name}` is an image: a ROS map needs its .yaml file too (pick both)")]
+    ImageOnly {
+        /// The image's name.
+        name: String,
+    },
+    /// A map edit whose lists of x and y indices differ in length.
+    #[error("MapUpdate: {xs} x indices but {ys} y indices")]
+    CellLists {
+        /// x indices given.
+        xs: usize,
+        /// y indices given.
+        ys: usize,
+    },
 }
+
+/// What a person may pick as a map.
+pub const MAP_FILES_EXPECTED: &str = "expected an rtnav JSON map (.json), a ROS map (its .yaml \
+                                      and its .pgm or .png image, picked together) or a \
+                                      MovingAI map (.map)";
 
 /// A configuration bundle (`System::load_conf`) that cannot be read or applied; nothing
 /// changes.

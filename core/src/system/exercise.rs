@@ -64,6 +64,7 @@ pub struct Exercise {
 
 /// One check of an exercise.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(tag = "check", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Check {
     /// DriveControl reached the goal within `within_s` seconds of the drive's start.
@@ -137,6 +138,7 @@ pub enum Check {
 
 /// The unit of a check's measured value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum Unit {
     /// Seconds.
     #[serde(rename = "s")]
@@ -317,6 +319,7 @@ impl Exercise {
 
 /// Where a check stands.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum CheckState {
     /// Not decided yet (only while the run goes on).
@@ -329,6 +332,7 @@ pub enum CheckState {
 
 /// How the exercise stands.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
     /// The drive has not started.
@@ -343,6 +347,7 @@ pub enum Verdict {
 
 /// One check as it stands (the page's checklist line, `rtnav check`'s line).
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct CheckStatus {
     /// The check and its numbers.
     pub check: Check,
@@ -381,6 +386,7 @@ impl fmt::Display for CheckStatus {
 
 /// The exercise as it stands.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ExerciseStatus {
     /// The task.
     pub task: String,

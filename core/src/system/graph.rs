@@ -17,6 +17,7 @@ use crate::rtc::{PortDirection, PortView, SampleView};
 
 /// The whole system as RT System Editor would show it, at one moment.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct SystemGraph {
     /// Simulated time \[s\].
     pub time: f64,
@@ -28,6 +29,7 @@ pub struct SystemGraph {
 
 /// One box of the picture.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct GraphComponent {
     /// `MotorControl`, or `InventGUI`.
     pub name: &'static str,
@@ -46,6 +48,7 @@ pub struct GraphComponent {
 
 /// What a port is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum PortKind {
     /// A data in-port.
@@ -60,6 +63,7 @@ pub enum PortKind {
 
 /// One port marker on a box.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct GraphPort {
     /// Its name (the seeds' where they name it).
     pub name: &'static str,
@@ -77,6 +81,7 @@ pub struct GraphPort {
 
 /// Data or service.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum ConnectionKind {
     /// `OutPort → InPort`.
@@ -87,6 +92,7 @@ pub enum ConnectionKind {
 
 /// One end of a connection.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct Endpoint {
     /// The component's name.
     pub component: &'static str,
@@ -105,6 +111,7 @@ impl Endpoint {
 
 /// One line of the picture.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct GraphConnection {
     /// `DriveControl.TargetVelocity->MotorControl.TargetVelocity`: what
     /// `Input::CutConnection` names.

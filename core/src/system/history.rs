@@ -37,6 +37,7 @@ pub const CHECKPOINT_CELLS: usize = 12_000_000;
 
 /// What a mark on the timeline stands for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum MarkKind {
     /// A global plan, or a local plan sent to DriveControl.
@@ -53,6 +54,7 @@ pub enum MarkKind {
 
 /// Something that happened, marked on the timeline.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct Mark {
     /// Simulated time \[ns\].
     pub t_ns: u64,
@@ -142,6 +144,7 @@ struct Checkpoint {
 
 /// The timeline's read-out for the page.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct TimelineView {
     /// Where the history starts (the set-up built) \[ns\].
     pub start_ns: u64,

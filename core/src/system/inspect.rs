@@ -13,6 +13,7 @@ use super::wiring::Wiring;
 /// Everything about one map cell, as the inspector shows it (JSON: `{x, y, occupancy,
 /// obstacle_distance, impassable, field}`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct CellInspection {
     /// Column.
     pub x: i64,
@@ -38,6 +39,7 @@ pub struct CellInspection {
 /// but the local target `G = G(parent) + repulsion + attraction + posture`; the target has
 /// `G` = 0.1 and parts 0.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct FieldInspection {
     /// Potential `G`.
     pub potential: Option<f64>,
@@ -63,6 +65,7 @@ pub struct FieldInspection {
 
 /// The parent of a reached cell in the potential field.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ParentInspection {
     /// Column.
     pub x: i64,

@@ -85,8 +85,10 @@ mod kind;
 mod links;
 mod mission;
 mod parameter_warning;
+mod picked_files;
 mod rates;
 mod record;
+mod refusal;
 mod replay;
 mod rest;
 mod robot;
@@ -98,12 +100,13 @@ pub mod setup;
 mod status;
 mod telemetry;
 mod timeline;
+mod views;
 mod wiring;
 
 pub use activity::{ComponentActivity, Held, ZeroOutput};
-pub use compare::{ComparePlots, Comparison, RunSummary, compare, setup_with};
+pub use compare::{ComparePlots, CompareTable, Comparison, RunSummary, compare, setup_with};
 pub use conf_bundle::CONF_BUNDLE_HEADER;
-pub use error::{ConfBundleError, ScenarioError, SessionError, SystemError};
+pub use error::{ConfBundleError, MAP_FILES_EXPECTED, ScenarioError, SessionError, SystemError};
 pub use events::{EventKind, SystemEvent};
 pub use exercise::{
     Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Unit, Verdict,
@@ -124,8 +127,10 @@ pub use kind::ComponentKind;
 pub use links::Peer;
 pub use mission::Mission;
 pub use parameter_warning::ParameterWarning;
+pub use picked_files::{PickError, PickedFiles};
 pub use rates::Rates;
 pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
+pub use refusal::Refusal;
 pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
 pub use rest::{
     ARRIVAL_HEADING_DEG, Measured, Motion, Offset, REST_SPEED, REST_TURN_RATE, Tolerances,
@@ -147,4 +152,8 @@ pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
 pub use status::{ComponentInfo, Status, SystemState};
 pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
 pub use timeline::Timeline;
+pub use views::{
+    ClockView, ComponentView, DirectionView, EventLevel, EventView, FrameView, MapView, PlanView,
+    PoseView, ScenarioView, TelemetryView,
+};
 pub use wiring::{Report, Wiring};

@@ -13,6 +13,7 @@ use crate::present::number;
 
 /// A parameter's warning (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, strum::VariantNames)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(tag = "kind", rename_all = "snake_case")]
 #[strum(serialize_all = "snake_case")]
 pub enum ParameterWarning {

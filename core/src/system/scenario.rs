@@ -291,6 +291,7 @@ pub struct BoxSpec {
 
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum OutcomeKind {
     /// The robot came to rest within the goal's arrival tolerances (spec §7).

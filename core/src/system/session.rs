@@ -54,6 +54,8 @@ use crate::rtc::LifecycleState;
 mod session_clock;
 #[path = "session_replay.rs"]
 mod session_replay;
+#[path = "session_view.rs"]
+mod session_view;
 pub use session_replay::ReplayCheck;
 
 /// The most wall time one [`Session::advance`] turns into simulated time \[ms\]: a tab that
@@ -97,6 +99,7 @@ enum Source {
 
 /// The last seconds of telemetry as one array per series (what the plots draw).
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct PlotWindow {
     /// Simulated time \[s\].
     pub t: Vec<f64>,
@@ -136,6 +139,7 @@ pub struct PlotWindow {
 
 /// One component's parameters (the parameter panel's group).
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ComponentParameters {
     /// The component (`LocalPathPlanning`).
     pub component: &'static str,
@@ -149,6 +153,7 @@ pub struct ComponentParameters {
 
 /// One parameter: its declaration (spec §1) and its values now.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ParameterView {
     /// The seed's name.
     pub name: &'static str,

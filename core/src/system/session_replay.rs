@@ -13,6 +13,7 @@ use crate::errors::SessionError;
 
 /// What loading a replay found: whether the run reproduced the recorded trace.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ReplayCheck {
     /// The scenario.
     pub scenario: String,
@@ -184,5 +185,27 @@ impl Session {
             .or_default()
             .insert(name.to_owned(), value);
         compare(scenario, files, &a, &b)
+    }
+
+    /// [`Session::compare_with`] the component named `component`.
+    pub fn compare_named(
+        &self,
+        component: &str,
+        name: &str,
+        text: &str,
+    ) -> crate::Result<Comparison> {
+        self.compare_with(ComponentKind::from_name(component)?, name, text)
+    }
+
+    /// Reads a replay file's text and loads it ([`Session::load_replay`]).
+    pub fn load_replay_text(&mut self, text: &str) -> crate::Result<ReplayCheck> {
+        let replay = Replay::from_json(text)?;
+        self.load_replay(&replay)
+    }
+
+    /// [`Session::seek`] to `t_s` seconds (a time before 0 or not finite is 0).
+    pub fn seek_s(&mut self, t_s: f64) -> crate::Result<()> {
+        let t = if t_s.is_finite() { t_s.max(0.0) } else { 0.0 };
+        self.seek(libm::round(t * 1e9) as u64)
     }
 }

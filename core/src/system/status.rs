@@ -22,6 +22,7 @@ use crate::rtc::LifecycleState;
 
 /// The whole system's state, from its components' states.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum SystemState {
     /// Every component Inactive.
     Inactive,
@@ -448,6 +449,7 @@ impl fmt::Display for Status {
 
 /// One component as the GUI's RTC panel shows it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub struct ComponentInfo {
     /// Which component.
     pub kind: ComponentKind,

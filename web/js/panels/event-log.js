@@ -1,3 +1,4 @@
+// @ts-check
 // The event log (InventGUI's log): plans, planning failures with their reasons, bumps,
 // arrival, component errors and state changes, map changes — newest first, in simulated-time
 // order — and the page's own notes (a refused goal, a bad map file). Each event is said from
@@ -19,8 +20,13 @@ const REPEATING = new Set(['SafetyStop', 'PlanningFailed', 'RequestRefused', 'Lo
 const REPEAT_WINDOW_S = 2.5;
 
 /** Simulated time as a person reads it: seconds with three decimals. */
+/** @param {number} t */
 export const seconds = (t) => `${t.toFixed(3)} s`;
 
+/**
+ * @param {HTMLElement} root
+ * @param {App} app
+ */
 export function createEventLog(root, app) {
   const { demo } = app;
   const list = el('ol', { id: 'events', class: 'events', reversed: true });
@@ -28,22 +34,26 @@ export function createEventLog(root, app) {
   root.append(el('div', { class: 'panel-head' }, el('h2', {}, t('log.title')), clear), list);
 
   /** The component an instance name names (`MotorControl0` → `MotorControl`). */
+  /** @param {string} instance */
   const componentOf = (instance) => instance.replace(/\d+$/, '');
-  const stateOf = (name) => JSON.parse(demo.components_json()).find((c) => c.name === name)?.state;
-  const telemetry = () => JSON.parse(demo.telemetry_json());
+  /** A component's state in the last frame read. @param {string} name */
+  const stateOf = (name) => app.frame?.components.find((c) => c.name === name)?.state;
+  /** The telemetry of the last frame read. */
+  const telemetry = () => app.frame?.telemetry;
 
   /**
    * The events shown over the canvas too, each tied to the state it describes: the notice
    * goes when `until` is true (or on Reset, Activate, a new scenario).
    */
+  /** @type {Record<string, (e: EventView) => () => boolean>} */
   const NOTICE = {
     Bump: () => () => stateOf('PhysicsSim') !== 'Error',
     ComponentError: (e) => {
-      const name = componentOf(e.data?.component ?? '');
+      const name = componentOf(String(e.data?.component ?? ''));
       return () => stateOf(name) !== 'Error';
     },
-    PlanningFailed: () => () => !['waiting_for_plan', 'no_route'].includes(telemetry().status_kind),
-    Arrived: () => () => !telemetry().arrived,
+    PlanningFailed: () => () => !['waiting_for_plan', 'no_route'].includes(telemetry()?.status_kind ?? ''),
+    Arrived: () => () => !telemetry()?.arrived,
   };
 
   /**
@@ -78,6 +88,8 @@ export function createEventLog(root, app) {
   /**
    * Adds one entry where its time puts it (newest first; equal times keep their order), or
    * counts a repeat of the condition an entry shows.
+   *
+   * @param {{time_s: number, kind: string, level: string, text: string, data?: EventView['data']}} e
    */
   function add(e) {
     const text = e.kind === 'Page' ? e.text : eventText(e);
@@ -91,16 +103,20 @@ export function createEventLog(root, app) {
       el('time', {}, seconds(e.time_s)),
       el('span', { class: 'text' }, text),
       el('span', { class: 'repeats' }));
-    item.rtnavEvent = e; // what the core sent (the end-to-end test reads it back)
-    item.rtnavCondition = key;
+    // What the core sent (the end-to-end test reads it back), and the condition it shows.
+    Object.assign(item, { rtnavEvent: e, rtnavCondition: key });
     let before = list.firstElementChild;
-    while (before && Number(before.dataset.t) > e.time_s) before = before.nextElementSibling;
+    while (before instanceof HTMLElement && Number(before.dataset.t) > e.time_s) before = before.nextElementSibling;
     list.insertBefore(item, before);
-    while (list.children.length > MAX_ENTRIES) list.lastElementChild.remove();
+    while (list.children.length > MAX_ENTRIES) list.lastElementChild?.remove();
   }
 
-  function update() {
-    const events = JSON.parse(app.guard.call(() => demo.take_events()) ?? '[]');
+  /**
+   * Adds the events read: a frame's, or (without any given) those since the last read —
+   * before a note of the page's, or after a change that cleared the log.
+   * @param {EventView[]} [events]
+   */
+  function update(events = app.guard.call(() => demo.take_events()) ?? []) {
     for (const e of events) add(e);
     const loud = events.filter((e) => e.kind in NOTICE).at(-1);
     if (loud) app.notice.show(eventText(loud), loud.level, { until: NOTICE[loud.kind](loud) });
@@ -115,6 +131,7 @@ export function createEventLog(root, app) {
      * A note of the page's own (`level`: info, success, warn, error), after the core's
      * events so far (a request may have run the clock: its events come first).
      */
+    /** @param {string} text @param {string} [level] */
     page(text, level = 'info') {
       update();
       add({ time_s: demo.time_s(), kind: 'Page', level, text });

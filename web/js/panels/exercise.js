@@ -1,28 +1,33 @@
+// @ts-check
 // The exercise of a scenario (issue 17): its task, the parameters it lets change, the
 // checks as a live checklist and the verdict at the end. Every check is evaluated by the
-// core (`Demo.exercise_json`, `rtnav::system::ExerciseWatch`) from the facts and samples
+// core (`Session::exercise`, in each frame's read; `rtnav::system::ExerciseWatch`) from the facts and samples
 // of the run, so `rtnav check` gives the same verdict; this panel only shows them.
 import { el, setText } from '../dom.js';
 import { t, num, has } from '../i18n.js';
 
-/** How often the checklist is read while the robot drives [ms]. */
-const EVERY_MS = 150;
-
 /** A check's line in the language: `check.KIND` with the check's numbers. */
+/** @param {Check} check */
 export function checkText(check) {
   const { check: kind, ...numbers } = check;
+  /** @type {Record<string, unknown>} */
   const vars = {};
   for (const [k, v] of Object.entries(numbers)) vars[k] = typeof v === 'number' ? num(v, 4) : v;
   return t(`check.${kind}`, vars);
 }
 
 /** What was measured, in the check's unit. */
+/** @param {CheckStatus} c */
 function measuredText(c) {
   if (c.changed?.length) return t('exercise.changed', { names: c.changed.join(', ') });
   if (c.measured === null || c.measured === undefined) return '';
   return t(`measured.${c.check.check}`, { value: num(c.measured, 3) });
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {App} app
+ */
 export function createExercisePanel(root, app) {
   const { demo } = app;
   const task = el('p', { class: 'exercise-task' });
@@ -32,15 +37,16 @@ export function createExercisePanel(root, app) {
   const title = el('strong', {}, t('exercise.title'));
   root.replaceChildren(el('div', { class: 'exercise-head' }, title, ' ', task), allowed, list, verdict);
   let last = '';
-  let lastAt = -Infinity;
 
+  /** @param {ExerciseStatus} status */
   function scenarioTask(status) {
-    const s = JSON.parse(demo.scenario_json());
+    const s = demo.scenario();
     const key = `scenario.${s?.name}.task`;
     const text = t(key);
     return text === key ? status.task : text;
   }
 
+  /** @param {ExerciseStatus | null} status */
   function show(status) {
     root.hidden = !status;
     if (!status) return;
@@ -65,15 +71,17 @@ export function createExercisePanel(root, app) {
       : t(`exercise.verdict.${status.verdict}_after`, { s: num(status.ended_after, 1) }));
   }
 
-  function update(now = performance.now(), force = false) {
-    if (!force && now - lastAt < EVERY_MS) return;
-    lastAt = now;
-    const json = demo.exercise_json();
-    if (json === last) return;
-    last = json;
-    show(JSON.parse(json));
+  /**
+   * Shows the exercise as the frame read it, when it changed.
+   * @param {ExerciseStatus | null} status
+   */
+  function update(status) {
+    const key = JSON.stringify(status);
+    if (key === last) return;
+    last = key;
+    show(status);
   }
 
-  app.on('loaded', () => update(performance.now(), true));
+  app.on('loaded', () => update(demo.exercise()));
   return { update };
 }

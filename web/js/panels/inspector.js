@@ -1,5 +1,5 @@
 // The hover inspector (issue 8): what the core knows about the map cell under the mouse
-// (`inspect_cell`): its indices and its centre in metres, its occupancy, the distance to the
+// (`Demo.inspect`): its indices and its centre in metres, its occupancy, the distance to the
 // nearest obstacle and whether that is within dmin, and LocalPathPlanning's potential there
 // explained as G = G(parent) + R + A + P (000 §5.2.4.9: the parent's potential, repulsion
 // from obstacles, attraction to the goal, the posture term) and the cell's state.
@@ -75,7 +75,7 @@ export function createInspector(root, app) {
 
   function inspect() {
     if (!cell) return;
-    const r = app.attempt(() => demo.inspect_cell(cell[0], cell[1]));
+    const r = app.attempt(() => demo.inspect(cell[0], cell[1]));
     if (!r.ok) {
       error.textContent = r.error;
       error.hidden = false;
@@ -83,10 +83,11 @@ export function createInspector(root, app) {
       return;
     }
     error.hidden = true;
-    if (r.value === lastJson) return;
-    lastJson = r.value;
-    const j = JSON.parse(r.value);
-    root.dataset.json = r.value;
+    const text = JSON.stringify(r.value);
+    if (text === lastJson) return;
+    lastJson = text;
+    const j = r.value;
+    root.dataset.json = text;
     root.dataset.cell = `${j.x},${j.y}`;
     for (const [key, , read, fmt] of FIELDS) {
       const v = read(j);

@@ -1,5 +1,5 @@
 // The parameter panel (issue 8): every configuration parameter of LocalPathPlanning,
-// MotorControl, DriveControl and PhysicsSim (`params_json()`), grouped by component, with its
+// MotorControl, DriveControl and PhysicsSim (`Demo.params()`), grouped by component, with its
 // unit, range and reflection timing (OpenRTM's 常時 "always" or 初期化時 "on activation").
 //
 // A value is edited in place (Enter or leaving the field sends it: `set_param`). Rust decides
@@ -9,7 +9,7 @@
 // service `Motor::SetPDGain` has its own small form, and the whole configuration can be
 // saved and loaded as one OpenRTM `.conf` file.
 //
-// The panel reads `params_json()` when the system changes (app events `loaded`, `changed`)
+// The panel reads `params()` when the system changes (app events `loaded`, `changed`)
 // and every half second while it is shown — never every frame. Rows carry the raw values
 // (`data-value`, `data-effective`, `data-pending`) for the end-to-end tests.
 import { el, setText } from '../dom.js';
@@ -44,7 +44,7 @@ export function createParamsPanel(root, app) {
   let lastPoll = -Infinity;
   const rows = new Map();
   const groups = new Map();
-  /** The latest parsed `params_json()`, by `component/name`. */
+  /** The latest `params()`, by `component/name`. */
   const held = new Map();
 
   // ---------------------------------------------------------------- head: .conf files
@@ -216,12 +216,13 @@ export function createParamsPanel(root, app) {
   // ---------------------------------------------------------------- refresh
 
   function refresh() {
-    const r = app.attempt(() => demo.params_json());
+    const r = app.attempt(() => demo.params());
     if (!r.ok || r.value === undefined) return;
+    const text = JSON.stringify(r.value);
     dirty = false;
-    if (r.value === last) return;
-    last = r.value;
-    const components = JSON.parse(r.value);
+    if (text === last) return;
+    last = text;
+    const components = r.value;
     held.clear();
     for (const c of components) {
       const group = groups.get(c.component) ?? makeGroup(c);

@@ -1,4 +1,4 @@
-// The plots (issue 8): the last 10 s of telemetry (`plot_json(10)`) on four small canvases
+// The plots (issue 8): the last 10 s of telemetry (`Demo.plot(10)`) on four small canvases
 // drawn here with the 2D context (no chart library):
 //   (a) MotorControl's target wheel rates against the physics' actual ones, left and right;
 //   (b) the wheel torques MotorControl commands, those the physics applies (saturated) and
@@ -273,9 +273,9 @@ export function createPlots(root, app) {
   }
 
   function redraw() {
-    const r = app.attempt(() => demo.plot_json(WINDOW_S));
+    const r = app.attempt(() => demo.plot(WINDOW_S));
     if (!r.ok || r.value === undefined) return false;
-    const data = JSON.parse(r.value);
+    const data = r.value;
     const ts = data.t ?? [];
     const end = ts.length ? ts[ts.length - 1] : demo.time_s();
     const t1 = Math.max(end, WINDOW_S);

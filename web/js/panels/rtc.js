@@ -1,3 +1,4 @@
+// @ts-check
 // The RTC panel: every component of the system (spec §0) with its lifecycle state in the RT
 // System Editor's colours, the reason when it is in Error, and the requests of spec §1 for
 // each one (those for all at once are in the system bar) — plus "Inject fault", and for Localization
@@ -7,6 +8,7 @@ import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';
 import { activityText, reasonText } from '../say.js';
 
+/** @type {Record<string, [string, string]>} */
 const ACTIONS = {
   Inactive: ['activate', t('rtc.activate')],
   Active: ['deactivate', t('rtc.deactivate')],
@@ -17,6 +19,11 @@ const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
 const GLITCH = { component: 'Localization', port: 'InSimulatedPosition', sample: () => new Float64Array([Number.NaN, 0, 0, 0]) };
 const GLITCH_TITLE = t('rtc.glitch.title');
 
+/**
+ * @param {HTMLElement} badge
+ * @param {string} state
+ * @param {string} colour
+ */
 function paint(badge, state, colour) {
   if (badge.dataset.state === state) return;
   badge.dataset.state = state;
@@ -24,6 +31,10 @@ function paint(badge, state, colour) {
   badge.style.color = textOn(colour);
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {App} app
+ */
 export function createRtcPanel(root, app) {
   const { demo } = app;
 
@@ -32,6 +43,7 @@ export function createRtcPanel(root, app) {
   const list = el('ol', { class: 'rtc-list', id: 'components' });
   const rows = new Map();
 
+  /** @param {ComponentView} c */
   function row(c) {
     const badge = el('span', { class: 'state-badge small' });
     const name = el('span', { class: 'rtc-name' });
@@ -41,7 +53,7 @@ export function createRtcPanel(root, app) {
     const action = el('button', { type: 'button', class: 'act' });
     const fault = el('button', { type: 'button', class: 'fault danger', title: t('rtc.fault.title', { name: c.instance_name }) }, t('rtc.fault'));
     action.addEventListener('click', () => {
-      const what = action.dataset.action;
+      const what = /** @type {'activate' | 'deactivate' | 'reset'} */ (action.dataset.action);
       request(t(`system.act.${what}`, { name: c.name }), () => demo[what](c.name), what === 'activate' || what === 'reset');
     });
     fault.addEventListener('click', () => request(t('rtc.fault.request', { name: c.name }), () => demo.inject_fault(c.name)));
@@ -73,6 +85,7 @@ export function createRtcPanel(root, app) {
   );
 
   return {
+    /** Every frame. @param {ComponentView[]} components */
     update(components) {
       for (const c of components) {
         const r = rows.get(c.name) ?? row(c);

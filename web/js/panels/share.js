@@ -1,3 +1,4 @@
+// @ts-check
 // Share and export (issue 8): a link that reproduces this set-up (the scenario, where the
 // robot starts and goes, the map edits since the scenario was loaded and every parameter
 // changed; `share_token`), the telemetry as CSV (`telemetry_csv`) and the frame on the
@@ -6,6 +7,11 @@ import { el } from '../dom.js';
 import { download, downloadText } from '../download.js';
 import { t, language } from '../i18n.js';
 
+/**
+ * @param {HTMLElement} root
+ * @param {HTMLCanvasElement} canvas
+ * @param {App} app
+ */
 export function createShare(root, canvas, app) {
   const { demo } = app;
 
@@ -24,7 +30,7 @@ export function createShare(root, canvas, app) {
     // While the robot stands, making the link restarts the set-up from it (what the link
     // opens with): the panels read the system again, and the log starts afresh with the
     // restarted system's events (its clock starts again too).
-    if (!JSON.parse(demo.telemetry_json()).driving) {
+    if (!demo.telemetry().driving) {
       app.log.clear();
       app.log.update();
       app.log.page(t('share.restarted'), 'info');
@@ -59,7 +65,7 @@ export function createShare(root, canvas, app) {
     onclick: () => {
       const r = app.attempt(() => demo.telemetry_csv());
       if (!r.ok) return app.notice.show(t('share.csv.none', { error: r.error }), 'error');
-      downloadText(r.value, 'rtnav-telemetry.csv', 'text/csv');
+      downloadText(r.value ?? '', 'rtnav-telemetry.csv', 'text/csv');
     },
   }, t('share.csv'));
   const png = el('button', {

@@ -1,6 +1,6 @@
 // The System tab (issue 19): the system as RT System Editor draws it — every RT-component a
 // box in its state's colour, its data ports and service ports as markers on the box, the
-// connections as lines — laid out from the core's own description (`demo.system_json()`,
+// connections as lines — laid out from the core's own description (`demo.system_graph()`,
 // rtnav::system::SystemGraph), never drawn by hand: a component, port or connection the core
 // adds appears here.
 //
@@ -396,7 +396,7 @@ export function createSystemPanel(root, app) {
   }
 
   function refresh(force) {
-    const r = app.attempt(() => JSON.parse(demo.system_json()));
+    const r = app.attempt(() => demo.system_graph());
     if (!r.ok) return;
     graph = r.value;
     const c = columns();

@@ -1,3 +1,4 @@
+// @ts-check
 // The system bar (issue 15), seen from every tab: the whole system's lifecycle state in the
 // RT System Editor's colours, and the requests on all components at once — Activate all,
 // Deactivate all, Reset all — which start and stop the robot. What the robot is doing is
@@ -5,8 +6,13 @@
 import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';
 
+/** @type {Record<string, string>} */
 const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
 
+/**
+ * @param {HTMLElement} root
+ * @param {App} app
+ */
 export function createSystemBar(root, app) {
   const { demo } = app;
 
@@ -34,11 +40,14 @@ export function createSystemBar(root, app) {
   );
 
   return {
-    /** Every frame: the state and which requests make sense now. */
-    update(components) {
+    /**
+     * Every frame: the state and which requests make sense now.
+     * @param {SystemState} s the system's state
+     * @param {ComponentView[]} components
+     */
+    update(s, components) {
       const active = components.filter((c) => c.state === 'Active').length;
       const error = components.filter((c) => c.state === 'Error').length;
-      const s = demo.system_state();
       if (badge.dataset.state !== s) {
         badge.dataset.state = s;
         const colour = EDITOR[s] ?? '#dee2e6';

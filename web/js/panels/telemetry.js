@@ -1,3 +1,4 @@
+// @ts-check
 // The telemetry readout under the canvas: where the robot is, how fast it goes, how far the
 // goal is, what the planners have done. `data-*` attributes carry the raw values (the
 // end-to-end test reads them).
@@ -14,25 +15,30 @@ const FIELDS = [
   ['plans', t('telemetry.plans')],
 ];
 
+/**
+ * @param {HTMLElement} root
+ * @param {App} app
+ */
 export function createTelemetry(root, app) {
-  const { demo } = app;
+  /** @type {Map<string, HTMLElement>} */
   const values = new Map();
   for (const [key, label] of FIELDS) {
     const dd = el('dd', { dataset: { key } });
     values.set(key, dd);
     root.append(el('div', { class: 'field', dataset: { field: key } }, el('dt', {}, label), dd));
   }
+  /** @param {string} key @param {string} text */
   const set = (key, text) => setText(values.get(key), text);
 
   return {
-    update() {
-      const v = JSON.parse(demo.telemetry_json());
+    /** Every frame. @param {TelemetryView} v */
+    update(v) {
       root.dataset.arrived = String(v.arrived);
       root.dataset.driving = String(v.driving);
       root.dataset.state = v.state;
-      root.dataset.distance = v.distance_to_goal ?? '';
-      root.dataset.bumps = v.bumps;
-      root.dataset.localPlans = v.local_plans;
+      root.dataset.distance = String(v.distance_to_goal ?? '');
+      root.dataset.bumps = String(v.bumps);
+      root.dataset.localPlans = String(v.local_plans);
       set('pose', `${fixed(v.pose.x, 2)}, ${fixed(v.pose.y, 2)} m · ${fixed(v.pose.theta_deg, 0)}°`);
       set('speed', `${fixed(v.v, 2)} m/s · ${fixed(v.w, 2)} rad/s`);
       set('goal', v.distance_to_goal === null ? '—' : `${fixed(v.distance_to_goal, 2)} m`);
@@ -45,8 +51,9 @@ export function createTelemetry(root, app) {
       let status = said.charAt(0).toUpperCase() + said.slice(1);
       if (v.paused) status += t('telemetry.paused');
       set('status', status);
-      if (values.get('status').title !== status) values.get('status').title = status;
-      values.get('status').dataset.arrived = String(v.arrived);
+      const shown = /** @type {HTMLElement} */ (values.get('status'));
+      if (shown.title !== status) shown.title = status;
+      shown.dataset.arrived = String(v.arrived);
     },
   };
 }

@@ -1,3 +1,4 @@
+// @ts-check
 // The timeline under the canvas (issue 16): play and pause, a slider to seek to any time of
 // the run, one tick back and forth, the run's events marked on the track (plans, failures,
 // bumps, faults, arrival), and the run as a replay file: download it (`*.rtnav.json`: the
@@ -5,7 +6,7 @@
 //
 // Every state is the core's (`Session`): a seek restores the nearest checkpoint and runs
 // from it (`demo.seek`), the recorded requests after the time reached are replayed as the
-// clock runs on, and a request made there drops them. The page only reads `timeline_json()`
+// clock runs on, and a request made there drops them. The page only reads `timeline()`
 // a few times a second and draws it.
 import { Demo } from '../../pkg/rtnav_wasm.js';
 import { el, setText } from '../dom.js';
@@ -16,14 +17,21 @@ import { scenarioTitle } from '../scenarios.js';
 
 const POLL_MS = 200;
 
+/** @param {number} ns */
 const secs = (ns) => ns / 1e9;
 
+/**
+ * @param {HTMLElement} root
+ * @param {App} app
+ */
 export function createTimeline(root, app) {
   const { demo } = app;
+  /** @type {TimelineView | null} */
   let view = null;
   let lastPoll = -Infinity;
   let dragging = false;
   let marksKey = '';
+  /** @type {Record<string, string>} */
   const markTitles = {
     plan: t('timeline.mark.plan'),
     failure: t('timeline.mark.failure'),
@@ -33,6 +41,7 @@ export function createTimeline(root, app) {
   };
 
   const message = el('span', { class: 'timeline-message', id: 'timeline-message', role: 'status' });
+  /** @param {string} text @param {string} [level] */
   const say = (text, level = 'info') => {
     message.textContent = text;
     message.dataset.level = level;
@@ -71,6 +80,7 @@ export function createTimeline(root, app) {
     onclick: () => {
       const r = app.attempt(() => demo.replay_json());
       if (!r.ok) return say(t('timeline.download.none', { error: r.error }), 'error');
+      if (r.value === undefined) return undefined;
       const name = `${app.scenarios?.current ?? 'run'}-${demo.time_s().toFixed(1)}s.rtnav.json`;
       downloadText(r.value, name, 'application/json');
       say(t('timeline.download.saved', { kb: (r.value.length / 1024).toFixed(1) }), 'success');
@@ -82,7 +92,7 @@ export function createTimeline(root, app) {
     onclick: () => fileInput.click(),
   }, t('timeline.load'));
   fileInput.addEventListener('change', async () => {
-    const file = fileInput.files[0];
+    const file = fileInput.files?.[0];
     fileInput.value = '';
     if (file) await loadReplay(await file.text());
   });
@@ -101,12 +111,14 @@ export function createTimeline(root, app) {
     refresh(true);
   }
 
+  /** @param {number} s */
   function seek(s) {
     const r = app.attempt(() => demo.seek(s));
     if (!r.ok) say(t('timeline.seek_failed', { error: r.error }), 'error');
     jumped();
   }
 
+  /** @param {number} ticks */
   function stepBy(ticks) {
     demo.set_paused(true);
     if (ticks > 0) {
@@ -127,7 +139,10 @@ export function createTimeline(root, app) {
     dragging = false;
   });
 
-  /** Loads a replay file's text: its scenario first, then the replay, run to its end. */
+  /**
+   * Loads a replay file's text: its scenario first, then the replay, run to its end.
+   * @param {string} text
+   */
   async function loadReplay(text) {
     let name;
     try {
@@ -137,10 +152,11 @@ export function createTimeline(root, app) {
     }
     if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name: scenarioTitle(name) }), 'error');
     demo.set_paused(true);
-    const r = app.attempt(() => JSON.parse(demo.load_replay(text)));
+    const r = app.attempt(() => demo.load_replay(text));
     jumped();
     if (!r.ok) return say(t('timeline.replay_refused', { error: r.error }), 'error');
     const c = r.value;
+    if (!c) return undefined;
     root.dataset.replayHash = c.hash;
     root.dataset.replayMatches = String(c.matches);
     const where = t('timeline.where', { s: secs(c.end_ns).toFixed(1), n: c.inputs });
@@ -156,13 +172,15 @@ export function createTimeline(root, app) {
   }
 
   function drawMarks() {
-    const span = Math.max(view.end_ns - view.start_ns, 1);
-    const key = `${view.start_ns}/${view.end_ns}/${view.marks.length}`;
+    if (!view) return;
+    const v = view;
+    const span = Math.max(v.end_ns - v.start_ns, 1);
+    const key = `${v.start_ns}/${v.end_ns}/${v.marks.length}`;
     if (key === marksKey) return;
     marksKey = key;
-    marks.replaceChildren(...view.marks.map((m) => el('span', {
+    marks.replaceChildren(...v.marks.map((m) => el('span', {
       class: `timeline-mark mark-${m.kind}`,
-      style: `left: ${(100 * (m.t_ns - view.start_ns)) / span}%`,
+      style: `left: ${(100 * (m.t_ns - v.start_ns)) / span}%`,
       // The core's text of the event is English: shown in English only.
       title: `${secs(m.t_ns).toFixed(2)} s · ${markTitles[m.kind] ?? m.kind}${language() === 'en' ? `: ${m.text}` : ''}`,
       dataset: { kind: m.kind, t: String(secs(m.t_ns)) },
@@ -173,12 +191,12 @@ export function createTimeline(root, app) {
     const now = performance.now();
     if (!force && now - lastPoll < POLL_MS) return;
     lastPoll = now;
-    const r = app.attempt(() => JSON.parse(demo.timeline_json()));
+    const r = app.attempt(() => demo.timeline());
     const paused = demo.paused();
     // The same words as the system bar's button: Run while paused, Pause while running.
     setText(play, paused ? t('run.label') : t('pause.label'));
     play.classList.toggle('active', paused);
-    if (!r.ok) {
+    if (!r.ok || !r.value) {
       root.dataset.enabled = 'false';
       return;
     }

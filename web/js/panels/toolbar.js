@@ -1,3 +1,4 @@
+// @ts-check
 // The toolbar above the canvas: what the mouse does (goal, start, obstacle, erase, pan) and
 // the brush's size (in cells or metres), the driving direction, Clear and SafeMode
 // (000 §5.2.4.7) and the layers the renderer draws; over the map: zoom in, out, Fit; in the
@@ -28,6 +29,12 @@ const LAYER_NAMES = {
   start_goal: t('layer.start_goal'),
 };
 
+/**
+ * @param {HTMLElement} root
+ * @param {HTMLElement} clockRoot
+ * @param {HTMLElement} mapRoot
+ * @param {App} app
+ */
 export function createToolbar(root, clockRoot, mapRoot, app) {
   const { demo } = app;
 
@@ -46,9 +53,9 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     el('option', { value: 'cells' }, t('brush.cells')), el('option', { value: 'm' }, 'm'));
   const fillBrush = () => {
     const unit = brushUnit.value;
-    const sizes = BRUSHES[unit];
+    const sizes = unit === 'm' ? BRUSHES.m : BRUSHES.cells;
     const keep = sizes.includes(app.ui.brush.size) && app.ui.brush.unit === unit ? app.ui.brush.size : sizes[unit === 'm' ? 2 : 0];
-    brush.replaceChildren(...sizes.map((n) => el('option', { value: n, selected: n === keep },
+    brush.replaceChildren(...sizes.map((/** @type {number} */ n) => el('option', { value: n, selected: n === keep },
       unit === 'm' ? `${n} m` : `${n}×${n}`)));
     app.ui.brush = { size: keep, unit };
   };
@@ -56,6 +63,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   brush.addEventListener('change', () => { app.ui.brush = { size: Number(brush.value), unit: brushUnit.value }; });
   fillBrush();
   const brushBox = el('span', { class: 'brush', title: t('brush.title') }, t('brush.label'), brush, brushUnit);
+  /** @param {string} tool */
   const showTool = (tool) => {
     for (const [t, b] of toolButtons) b.setAttribute('aria-pressed', String(t === tool));
     brushBox.hidden = !(tool === 'paint' || tool === 'erase');
@@ -82,7 +90,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     });
   }
   app.on('loaded', () => {
-    app.ui.backward = JSON.parse(demo.plan_json()).direction === 'backward';
+    app.ui.backward = demo.plan().direction === 'backward';
     showDirection();
   });
   showDirection();
@@ -115,22 +123,22 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   });
 
   // ---- layers
-  const layers = JSON.parse(demo.layers_json());
+  const layers = demo.layers();
   const layerBoxes = Object.keys(LAYER_NAMES).filter((k) => k in layers).map((name) => {
-    const box = el('input', { type: 'checkbox', id: `layer-${name}`, checked: layers[name] });
+    const box = el('input', { type: 'checkbox', id: `layer-${name}`, checked: layers[/** @type {keyof Layers} */ (name)] });
     box.addEventListener('change', () => {
       const r = app.attempt(() => demo.set_layer(name, box.checked));
       if (!r.ok) app.notice.show(r.error, 'error');
       app.emit('layers');
     });
-    return el('label', { class: 'layer' }, box, LAYER_NAMES[name]);
+    return el('label', { class: 'layer' }, box, LAYER_NAMES[/** @type {keyof typeof LAYER_NAMES} */ (name)]);
   });
   const layerMenu = el('details', { class: 'menu', id: 'layers' },
     el('summary', { class: 'plain' }, t('layers.label')),
     el('div', { class: 'menu-body' }, ...layerBoxes));
   // The menu opens toward whichever side of the page has room.
   layerMenu.addEventListener('toggle', () => {
-    const body = layerMenu.querySelector('.menu-body');
+    const body = /** @type {HTMLElement} */ (layerMenu.querySelector('.menu-body'));
     body.classList.remove('to-right');
     if (layerMenu.open && body.getBoundingClientRect().left < 0) body.classList.add('to-right');
   });
@@ -141,10 +149,10 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     speed.value = String(demo.speed());
     brushUnit.value = app.ui.brush.unit;
     fillBrush();
-    const now = JSON.parse(demo.layers_json());
+    const now = demo.layers();
     for (const label of layerBoxes) {
-      const box = label.querySelector('input');
-      box.checked = Boolean(now[box.id.replace(/^layer-/, '')]);
+      const box = /** @type {HTMLInputElement} */ (label.querySelector('input'));
+      box.checked = Boolean(now[/** @type {keyof Layers} */ (box.id.replace(/^layer-/, ''))]);
     }
   });
 
@@ -188,8 +196,9 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   });
 
   return {
-    update() {
-      const paused = demo.paused();
+    /** Every frame: the clock's pause shown. @param {ClockView} clock */
+    update(clock) {
+      const { paused } = clock;
       if (pause.dataset.paused !== String(paused)) {
         pause.dataset.paused = String(paused);
         pause.textContent = paused ? t('run.label') : t('pause.label');
