@@ -11,6 +11,7 @@
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test                every check CI runs, with a summary
+//! cargo xtask e2e [FILE...]       the page's build and the browser tests alone
 //! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
 //! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
@@ -54,6 +55,8 @@ commands:
                        a one-hour soak, the wasm tests under Node, the page's build and
                        the browser end-to-end tests (against the dist folder, served under
                        a sub-path)
+  e2e [FILE...]        the page's build and the browser end-to-end tests alone (only
+                       the named tests/e2e files, e.g. page.test.mjs, if any)
   fuzz [--seconds N] [--seed S] [--target NAME]...
                        fuzz the readers and the hostile calls in release mode for N s in
                        all (default 300); prints per target the inputs tried, the failures
@@ -132,6 +135,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             }
             return Ok(test::run_all());
         }
+        "e2e" => return Ok(test::run_e2e(rest)),
         "bench" => bench::run_all(rest)?,
         "fuzz" => fuzz::fuzz(rest)?,
         "soak" => soak::soak(rest)?,
