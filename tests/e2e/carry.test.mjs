@@ -7,7 +7,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { REPO, WAIT, launch, openPage, cellToPage, activateAll, showTab } from './helpers.mjs';
+import { REPO, WAIT, launch, openPage, cellToPage, activateAll, showTab, within, shownDriven } from './helpers.mjs';
 
 let browser;
 before(async () => {
@@ -22,6 +22,12 @@ async function switchTo(page, lang) {
   await Promise.all([page.waitForNavigation(), page.selectOption('#language', lang)]);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
   assert.equal(await page.evaluate(() => document.documentElement.lang), lang);
+}
+
+/** Pauses or runs the clock with its button (in either language) and waits until it shows so. */
+async function setPaused(page, paused) {
+  await page.click('#pause');
+  await page.waitForSelector(`#pause[data-paused="${paused}"]`, { state: 'attached', ...WAIT });
 }
 
 /** What the run is: time, pose, goal, plan, the map's key, the trace hash of the timeline. */
@@ -53,8 +59,9 @@ test('switching the language carries the run: goal, edits, parameters, time, pau
   await page.fill('#param-DriveControl-MaxVelocity', '0.4');
   await page.press('#param-DriveControl-MaxVelocity', 'Enter');
   await activateAll(page);
-  await page.waitForFunction(() => window.rtnav.demo.time_s() > 3, null, { timeout: 60_000 });
-  await page.evaluate(() => window.rtnav.demo.set_paused(true));
+  // The clock has run since the page opened: what counts is that the robot has driven.
+  await shownDriven(page, 1, { timeout: 60_000 });
+  await setPaused(page, true);
   await page.click('#tool-pan');
   await page.click('#dir-backward');
   await page.selectOption('#speed', '2');
@@ -75,9 +82,9 @@ test('switching the language carries the run: goal, edits, parameters, time, pau
   assert.doesNotMatch(page.url(), /share=/, 'the run is carried, not a share link');
 
   // It goes on from there; and back to English, still the same run.
-  await page.evaluate(() => window.rtnav.demo.set_paused(false));
+  await setPaused(page, false);
   await page.waitForFunction((t) => window.rtnav.demo.time_s() > t + 1, before.time, { timeout: 60_000 });
-  await page.evaluate(() => window.rtnav.demo.set_paused(true));
+  await setPaused(page, true);
   const later = await state(page);
   await switchTo(page, 'en');
   await page.waitForFunction((t) => window.rtnav.demo.time_s() === t, later.time, WAIT);
@@ -97,9 +104,15 @@ test('a map loaded from a file cannot be carried: the page asks, and staying kee
   const map = await page.evaluate(() => JSON.parse(window.rtnav.demo.map_json()).name);
   // Asked, and the person stays: same page, same map, the picker back on English.
   const asked = [];
-  page.once('dialog', (d) => { asked.push(d.message()); d.dismiss(); });
+  const dismissed = new Promise((done) => page.once('dialog', async (d) => {
+    asked.push(d.message());
+    await d.dismiss();
+    done();
+  }));
   await page.selectOption('#language', 'ja');
-  await page.waitForTimeout(300);
+  await within(dismissed, 'the question whether to leave the map behind');
+  // The picker goes back to English once the question is answered.
+  await page.waitForFunction(() => document.getElementById('language').value === 'en', null, WAIT);
   assert.equal(asked.length, 1);
   assert.match(asked[0], /cannot be carried/);
   assert.equal(await page.inputValue('#language'), 'en');

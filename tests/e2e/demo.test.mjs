@@ -12,8 +12,9 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import {
-  REPO, DATA, DATA_MISSING, WAIT, COLOURS, launch, openPage, screenshot, plan, telemetry, mapInfo,
-  cellToPage, expectState, activateAll, logged, solidObstacleCell } from './helpers.mjs';
+  REPO, DATA, DATA_MISSING, WAIT, DRIVE, COLOURS, launch, openPage, screenshot, plan, telemetry, mapInfo,
+  cellToPage, expectState, activateAll, logged, solidObstacleCell, frames, until, shownText, shownStatus,
+  shownDriven, shownLogged, driven, systemShows } from './helpers.mjs';
 
 /** The frame budget of one frame (simulation + render + blit), ms. */
 const BUDGET_MS = 8;
@@ -29,7 +30,7 @@ after(async () => {
 /** A fresh page, loaded and ready; `problems` collects page errors and console errors. */
 const open = () => openPage(browser.context);
 
-test('the default scenario is drawn, and Activate all drives the robot to the goal', { timeout: 120_000 }, async () => {
+test('the default scenario is drawn, and Activate all drives the robot to the goal', { timeout: 300_000 }, async () => {
   const { page, problems } = await open();
   assert.equal(await page.inputValue('#scenario'), 'open_field');
   assert.match(await page.textContent('#about-title'), /open field/);
@@ -53,8 +54,8 @@ test('the default scenario is drawn, and Activate all drives the robot to the go
   for (const name of ['PhysicsSim', 'MotorControl', 'Localization', 'DriveControl']) {
     await expectState(page, name, 'Inactive');
   }
-  assert.equal(await page.textContent('#system-state'), 'Partial · 4 of 8 Active');
-  assert.deepEqual(await logged(page, 'GlobalPlan'), ['global plan: 206 cells, 25.88 m']);
+  await shownText(page, '#system-state', 'Partial · 4 of 8 Active');
+  assert.deepEqual(await shownLogged(page, 'GlobalPlan'), ['global plan: 206 cells, 25.88 m']);
 
   await activateAll(page);
   for (const name of ['PhysicsSim', 'MotorControl', 'Localization', 'DriveControl']) {
@@ -62,18 +63,19 @@ test('the default scenario is drawn, and Activate all drives the robot to the go
   }
   // The README's screenshot: on the way, paused.
   await page.selectOption('#speed', '4');
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 11, null, WAIT);
+  await shownDriven(page, 11);
   await page.click('#pause');
-  await page.waitForTimeout(200);
+  await shownText(page, '#pause', 'Run');
+  await frames(page, 3);
   await screenshot(page, 'screenshot-demo.png');
   await page.click('#pause');
   await page.selectOption('#speed', '16');
-  await page.waitForSelector('#telemetry[data-arrived="true"]', { timeout: 60_000 });
+  await page.waitForSelector('#telemetry[data-arrived="true"]', DRIVE);
+  await shownStatus(page, /^Arrived$/, ['arrived']);
   const t = await telemetry(page);
   assert.ok(t.distance_to_goal < 0.1, `arrived ${t.distance_to_goal} m from the goal`);
   assert.equal(t.bumps, 0);
-  assert.equal(await page.textContent('#telemetry dd[data-key="status"]'), 'Arrived');
-  const arrived = await logged(page, 'Arrived');
+  const arrived = await shownLogged(page, 'Arrived');
   assert.equal(arrived.length, 1);
   assert.match(arrived[0], /^arrived at \(2[23]\.\d{3}, 15\.\d{3}, \d+\.\d°\): 0\.0\d\d m and \d+\.\d\d° from the goal \(it came in \d+\.\d° off the goal heading\)$/);
   await screenshot(page, 'screenshot-arrived.png', { docs: false });
@@ -81,10 +83,10 @@ test('the default scenario is drawn, and Activate all drives the robot to the go
   await page.close();
 });
 
-test('an obstacle painted on the path while Active is planned around', { timeout: 120_000 }, async () => {
+test('an obstacle painted on the path while Active is planned around', { timeout: 180_000 }, async () => {
   const { page, problems } = await open();
   await activateAll(page);
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.5, null, WAIT);
+  await shownDriven(page, 0.5);
   // A stroke of the 5×5 brush across the path, 40 % of the way along.
   const { local_path: path } = await plan(page);
   const at = path[Math.floor(path.length * 0.4)];
@@ -115,7 +117,7 @@ test('an obstacle painted on the path while Active is planned around', { timeout
   assert.equal(blocked, 0, 'the new local path avoids every obstacle cell');
   assert.notEqual(after.local_path.length, before);
   await page.selectOption('#speed', '4');
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 9, null, { timeout: 30_000 });
+  await shownDriven(page, 9, { timeout: 60_000 });
   await page.click('#pause');
   await screenshot(page, 'screenshot-replan.png');
   assert.equal((await telemetry(page)).bumps, 0);
@@ -146,6 +148,7 @@ test('a goal dropped inside an obstacle is refused; the previous goal and path s
   await page.click('#dir-backward');
   await page.waitForSelector('#notice[data-level="success"]:not([hidden])', WAIT);
   assert.equal((await plan(page)).direction, 'backward');
+  const goalsBefore = (await shownLogged(page, 'GoalSet')).length;
   const target = before.local_path[Math.floor(before.local_path.length / 2)];
   const [gx, gy] = await cellToPage(page, target);
   await page.mouse.move(gx, gy);
@@ -160,7 +163,7 @@ test('a goal dropped inside an obstacle is refused; the previous goal and path s
   assert.ok(Math.hypot(moved.goal.x - centre[0], moved.goal.y - centre[1]) < m.grid_size, JSON.stringify([moved.goal, centre]));
   assert.equal(moved.direction, 'backward');
   assert.notDeepEqual(moved.local_path, before.local_path);
-  const goals = await logged(page, 'GoalSet');
+  const goals = await shownLogged(page, 'GoalSet', goalsBefore + 1);
   assert.match(goals.at(-1), /→ \(\d+\.\d\d, \d+\.\d\d, 90\.0°\), Backward$/);
   assert.deepEqual(problems, []);
   await page.close();
@@ -173,9 +176,9 @@ test('Inject fault → Error with the reason → Reset → Inactive → Activate
   await page.click(`${row} .fault`);
   await expectState(page, 'MotorControl', 'Error');
   assert.equal(await page.textContent(`${row} .rtc-reason`), 'Reason: injected fault: requested from the page');
-  await page.waitForSelector('#system-state[data-state="Error"]', WAIT);
+  await systemShows(page, 'Error');
   assert.equal(await page.$eval('#system-state', (e) => getComputedStyle(e).backgroundColor), COLOURS.Error);
-  assert.deepEqual(await logged(page, 'ComponentError'), ['MotorControl0: on_execute failed: injected fault: requested from the page']);
+  assert.deepEqual(await shownLogged(page, 'ComponentError'), ['MotorControl0: on_execute failed: injected fault: requested from the page']);
   assert.equal(await page.textContent(`${row} .act`), 'Reset');
   assert.equal(await page.isDisabled(`${row} .fault`), true);
   await page.click(`${row} .act`);
@@ -183,12 +186,15 @@ test('Inject fault → Error with the reason → Reset → Inactive → Activate
   assert.equal(await page.isVisible(`${row} .rtc-reason`), false);
   await page.click(`${row} .act`);
   await expectState(page, 'MotorControl', 'Active');
-  await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
+  await systemShows(page, 'Active');
   // The robot drives on.
-  const driven = (await telemetry(page)).path_length;
-  await page.waitForFunction((d) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > d + 0.3, driven, WAIT);
-  const changes = await logged(page, 'StateChanged');
-  assert.deepEqual(changes.filter((t) => t.startsWith('MotorControl0')), [
+  await shownDriven(page, (await driven(page)) + 0.3);
+  const changes = await until(page, 'MotorControl0\'s five state changes in the log', () => {
+    const lines = [...document.querySelectorAll('#events li[data-kind="StateChanged"] .text')]
+      .map((i) => i.textContent).reverse().filter((t) => t.startsWith('MotorControl0'));
+    return { ok: lines.length >= 5, value: lines, shown: JSON.stringify(lines) };
+  });
+  assert.deepEqual(changes, [
     'MotorControl0: Created → Inactive',
     'MotorControl0: Inactive → Active',
     'MotorControl0: Active → Error',
@@ -205,8 +211,11 @@ test('Inject fault → Error with the reason → Reset → Inactive → Activate
 test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', { timeout: 60_000 }, async () => {
   const { page, problems } = await open();
   await activateAll(page);
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.3, null, WAIT);
-  // Paint right where the robot is.
+  await shownDriven(page, 0.3);
+  // Paint right where the robot is, with the clock paused (on a loaded machine the robot
+  // would drive off the cell while the brush is chosen); the next tick touches it.
+  await page.click('#pause');
+  await shownText(page, '#pause', 'Run');
   const t = await telemetry(page);
   const m = await mapInfo(page);
   const cell = [Math.floor((t.pose.x - m.origin[0]) / m.grid_size), Math.floor((t.pose.y - m.origin[1]) / m.grid_size)];
@@ -214,15 +223,18 @@ test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', {
   await page.selectOption('#brush', '5');
   const [x, y] = await cellToPage(page, cell);
   await page.mouse.click(x, y);
+  await page.waitForFunction(([cx, cy]) => window.rtnav.demo.cell(cx, cy) === 1, cell, WAIT);
+  await page.click('#pause');
+  await shownText(page, '#pause', 'Pause');
   await expectState(page, 'PhysicsSim', 'Error');
   const reason = await page.textContent('#components li[data-component="PhysicsSim"] .rtc-reason');
   assert.match(reason, /^Reason: bump: /);
-  assert.equal((await logged(page, 'Bump')).length, 1);
-  assert.match(await page.textContent('#telemetry dd[data-key="status"]'), /^PhysicsSim0 in Error: bump: .+ \(Reset recovers\)$/);
+  assert.equal((await shownLogged(page, 'Bump')).length, 1);
+  await shownStatus(page, /^PhysicsSim0 in Error: bump: .+ \(Reset recovers\)$/);
   const goal = (await plan(page)).goal;
   const pose = (await telemetry(page)).pose;
   await page.click('#reset-all');
-  await page.waitForSelector('#system-state[data-state="Inactive"]', WAIT);
+  await systemShows(page, 'Inactive');
   await expectState(page, 'PhysicsSim', 'Inactive');
   assert.equal(await page.isVisible('#components li[data-component="PhysicsSim"] .rtc-reason'), false);
   // Nothing held is lost: the goal, the robot's pose, the painted cells.
@@ -233,12 +245,11 @@ test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', {
   await page.click('#tool-erase');
   await page.mouse.click(x, y);
   await page.waitForFunction(([cx, cy]) => window.rtnav.demo.cell(cx, cy) === 0, cell, WAIT);
-  const driven = (await telemetry(page)).path_length;
   const sent = (await logged(page, 'LocalPlanSent')).length;
   await activateAll(page);
-  await page.waitForFunction((d) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > d + 0.3, driven, WAIT);
+  await shownDriven(page, (await driven(page)) + 0.3);
   // LocalPathPlanning plans afresh after its activation (spec §3 Decision 0.2, re-activation).
-  assert.ok((await logged(page, 'LocalPlanSent')).slice(sent).some((t) => t.startsWith('local plan sent')));
+  assert.ok((await shownLogged(page, 'LocalPlanSent', sent + 1)).slice(sent).some((t) => t.startsWith('local plan sent')));
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -271,10 +282,11 @@ test('a bad map file is refused with the reason; the current map stays', { timeo
     name: 'room.json', mimeType: 'application/json',
     buffer: Buffer.from(JSON.stringify({ width: 8, height: 5, grid_size: 0.5, rows })),
   });
-  await page.waitForSelector('#notice[data-level="success"]:not([hidden])', WAIT);
+  // (The notice of the map before may still be up: the title says which map is shown.)
+  await shownText(page, '#about-title', 'Map file: room.json');
+  await shownText(page, '#notice:not([hidden])[data-level="success"] #notice-text', /room\.json/);
   const room = await mapInfo(page);
   assert.deepEqual([room.name, room.width, room.height, room.grid_size], ['room.json', 8, 5, 0.5]);
-  assert.equal(await page.textContent('#about-title'), 'Map file: room.json');
   assert.equal((await plan(page)).goal, null);
   // And a scenario from the picker replaces it.
   await page.selectOption('#scenario', 'backward_dock');
@@ -294,28 +306,31 @@ test('a MovingAI benchmark map (external data) loads from the file picker', { ti
   await page.close();
 });
 
-test('frame time: step + render + blit at 1280×800 (reported)', { timeout: 90_000 }, async () => {
+test('frame time: step + render + blit at 1280×800 (reported)', { timeout: 240_000 }, async () => {
   const { page, problems } = await open();
   await page.evaluate(() => window.rtnav.setFrameSize(1280, 800));
   assert.deepEqual(await page.evaluate(() => [document.getElementById('view').width, document.getElementById('view').height]), [1280, 800]);
   await activateAll(page);
-  await page.waitForTimeout(500);
-  /** Median and 90th percentile of the page's own frame times over `ms` of driving. */
-  const measure = async (speed, ms) => {
+  await shownDriven(page, 0.1);
+  /** Median and 90th percentile of the page's own frame times over `n` frames of driving. */
+  const measure = async (speed, n) => {
     await page.selectOption('#speed', speed);
     await page.evaluate(() => window.rtnav.clearFrameTimes());
-    await page.waitForTimeout(ms);
+    const t0 = Date.now();
+    await until(page, `${n} frames drawn at ${speed}×`, (n) => {
+      const k = window.rtnav.frameTimes().length;
+      return { ok: k >= n, shown: `${k} frames` };
+    }, n, { timeout: 60_000 });
     const times = (await page.evaluate(() => window.rtnav.frameTimes())).sort((a, b) => a - b);
-    assert.ok(times.length > 30, `${times.length} frames in ${ms} ms`);
     const at = (q) => times[Math.min(times.length - 1, Math.floor(times.length * q))];
     const line = `frame time at 1280×800, ${speed}× speed: median ${at(0.5).toFixed(2)} ms, ` +
-      `90th percentile ${at(0.9).toFixed(2)} ms over ${times.length} frames`;
+      `90th percentile ${at(0.9).toFixed(2)} ms over ${times.length} frames in ${Date.now() - t0} ms`;
     console.log(line);
     return at(0.5);
   };
   // The machine is shared (other builds may run): the better of two windows counts.
-  const median = Math.min(await measure('1', 2500), await measure('1', 2500));
-  await measure('16', 2500);
+  const median = Math.min(await measure('1', 150), await measure('1', 150));
+  await measure('16', 150);
   assert.equal((await telemetry(page)).state, 'Active');
   // Speed is measured by the benchmarks, not asserted by a test (a shared machine's wall
   // time says little): the budget is reported beside the measurement.
@@ -333,6 +348,8 @@ test('a Rust panic is shown, not a frozen tab', { timeout: 60_000 }, async () =>
   const message = await page.textContent('#crash-message');
   assert.match(message, /debug_panic: deliberate panic requested by the page/);
   assert.match(message, /wasm\/src\/demo\.rs/);
+  // The console's lines reach the test as messages of their own, after the page showed them.
+  for (const t0 = Date.now(); problems.length === 0 && Date.now() - t0 < WAIT.timeout;) await new Promise((r) => setTimeout(r, 50));
   assert.ok(problems.length >= 1, 'the panic is logged');
   for (const p of problems) assert.match(p, /debug_panic/);
   await page.close();

@@ -8,7 +8,7 @@ import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
 import { promisify } from 'node:util';
-import { WAIT, REPO, launch, openPage, screenshot, showTab, frames, layoutProblems } from './helpers.mjs';
+import { WAIT, DRIVE, REPO, launch, openPage, screenshot, showTab, frames, layoutProblems } from './helpers.mjs';
 
 const run = promisify(execFile);
 const browsers = [];
@@ -43,12 +43,12 @@ async function drive(page) {
   await page.selectOption('#speed', '16');
   await page.click('#activate-all');
   await page.waitForSelector('#exercise .exercise-verdict:not([data-verdict="waiting"])', WAIT);
-  await page.waitForSelector('#exercise .exercise-verdict:is([data-verdict="passed"], [data-verdict="failed"])', { timeout: 120_000 });
+  await page.waitForSelector('#exercise .exercise-verdict:is([data-verdict="passed"], [data-verdict="failed"])', DRIVE);
   await frames(page, 2);
   return page.$eval('#exercise .exercise-verdict', (v) => v.dataset.verdict);
 }
 
-test('an exercise done in the page: the live checklist, then the verdict; the same as rtnav check', { timeout: 300_000 }, async () => {
+test('an exercise done in the page: the live checklist, then the verdict; the same as rtnav check', { timeout: 480_000 }, async () => {
   const { context } = await browser();
   const { page, problems } = await openPage(context, '?lang=en');
   await pick(page, 'ex_backward_dock');
@@ -110,6 +110,8 @@ for (const [width, height, scenario] of [[1280, 800, 'ex_fault_recovery'], [768,
     assert.equal(await page.evaluate(() => document.documentElement.lang), 'ja');
     await page.selectOption('#scenario', scenario);
     await page.waitForFunction((n) => window.rtnav.scenarios.current === n, scenario, WAIT);
+    // The exercise panel shows the scenario's task and checklist.
+    await page.waitForSelector('#exercise:not([hidden]) .exercise-verdict[data-verdict="waiting"]', WAIT);
     await frames(page, 3);
     const visible = await page.evaluate(() => {
       // What a person sees: the text of every visible element (the panels not shown are
@@ -159,6 +161,7 @@ test('the choice is kept in local storage and goes into the share link', { timeo
   await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
   assert.equal(await page.textContent('#activate-all'), 'すべて活性化');
   await page.click('#share-copy');
+  await page.waitForSelector('#share-link:not([hidden])', WAIT);
   const link = await page.inputValue('#share-link');
   assert.match(link, /[?&]lang=ja&share=/);
   await page.close();

@@ -36,7 +36,15 @@ const ARGS = [
   '--no-first-run',
   '--disable-quic',
 ];
-export const WAIT = { timeout: 20_000 };
+/**
+ * How long a test waits for the page to show something that follows at once from what it
+ * did (a click's state, a panel's refresh, a few simulated seconds at 1×). Sized for a
+ * loaded 2-core machine (other builds beside the browser), where the page may draw only a
+ * few frames a second: generous, but bounded, so a page that never shows it fails.
+ */
+export const WAIT = { timeout: 30_000 };
+/** How long a test waits for a whole drive (an arrival, an exercise's verdict) at 16×. */
+export const DRIVE = { timeout: 150_000 };
 export const COLOURS = { Inactive: 'rgb(0, 0, 255)', Active: 'rgb(0, 255, 0)', Error: 'rgb(255, 0, 0)' };
 
 /**
@@ -79,7 +87,132 @@ export async function openPage(context, query = '', { init } = {}) {
   if (await page.isVisible('#crash')) {
     assert.fail(`the page did not start: ${await page.innerText('#crash')}\n${problems.join('\n')}`);
   }
+  // Ready is set when the scenario has loaded; the panels show it from the next frame on.
+  await frames(page, 2);
   return { page, problems };
+}
+
+let polls = 0;
+
+/**
+ * Waits until the page shows what `check` looks for, as Playwright's auto-waiting
+ * assertions do: `check(arg)` runs in the page at every animation frame and returns
+ * `{ ok, shown, value }` — whether it is shown, what the page shows (for the message when
+ * it never is) and what to return. It may read the DOM and the core (`window.rtnav`) in the
+ * same call, so a shown value is compared with the core's as they are at one moment.
+ * After `timeout` ms it fails, saying what was awaited (`what`) and what was shown last.
+ */
+export async function until(page, what, check, arg = null, { timeout = WAIT.timeout } = {}) {
+  const slot = `__e2eShown${++polls}`;
+  const expression = `(() => {
+    const r = (${check})(${JSON.stringify(arg)});
+    window[${JSON.stringify(slot)}] = r.shown;
+    return r.ok ? { value: r.value ?? null } : false;
+  })()`;
+  try {
+    const handle = await page.waitForFunction(expression, null, { timeout, polling: 'raf' });
+    return (await handle.jsonValue()).value;
+  } catch (e) {
+    if (!/Timeout .*exceeded/.test(e.message)) throw e;
+    const shown = await page.evaluate((s) => window[s], slot).catch((err) => `nothing readable (${err.message})`);
+    assert.fail(`waited ${timeout / 1000} s for ${what}; the page shows ${typeof shown === 'string' ? shown : JSON.stringify(shown)}`);
+  }
+}
+
+/**
+ * Waits until the element `selector` shows `text` (a string: exactly; a RegExp: matching)
+ * and returns its text.
+ */
+export function shownText(page, selector, text, options = {}) {
+  const want = text instanceof RegExp ? { re: text.source, flags: text.flags } : { exact: text };
+  return until(page, `${selector} to show ${text instanceof RegExp ? text : JSON.stringify(text)}`, (a) => {
+    const e = document.querySelector(a.selector);
+    const t = e?.textContent ?? null;
+    const ok = t !== null && ('exact' in a ? t === a.exact : new RegExp(a.re, a.flags).test(t));
+    return { ok, value: t, shown: e ? JSON.stringify(t) : `no ${a.selector}` };
+  }, { selector, ...want }, options);
+}
+
+/**
+ * Waits until the telemetry's status line shows text matching `re` for a status of one of
+ * `kinds` (the core's `status_kind`s, any if null), and the core's status is still the one
+ * the page drew: the words shown are the truth now. Returns `{ text, kind }`.
+ */
+export function shownStatus(page, re, kinds = null, options = {}) {
+  return until(page, `the status to read /${re.source}/${kinds ? ` (${kinds.join(' or ')})` : ''}`, (a) => {
+    const tel = document.getElementById('telemetry');
+    const text = tel.querySelector('dd[data-key="status"]').textContent;
+    const drawn = tel.dataset.status;
+    const core = JSON.parse(window.rtnav.demo.telemetry_json()).status_kind;
+    const ok = new RegExp(a.re).test(text) && (a.kinds === null || a.kinds.includes(drawn)) && drawn === core;
+    return { ok, value: { text, kind: drawn }, shown: `the status "${text}" (drawn for ${drawn}; the core's status now ${core})` };
+  }, { re: re.source, kinds }, options);
+}
+
+/** The distance driven as the telemetry shows it [m]. */
+export const driven = (page) =>
+  page.$eval('#telemetry dd[data-key="driven"]', (e) => parseFloat(e.textContent));
+
+/** Waits until the telemetry shows more than `metres` driven; returns what it shows. */
+export function shownDriven(page, metres, options = {}) {
+  return until(page, `the telemetry to show more than ${metres} m driven`, (m) => {
+    const t = document.querySelector('#telemetry dd[data-key="driven"]').textContent;
+    return { ok: parseFloat(t) > m, value: parseFloat(t), shown: `driven ${t}, the status "${document.querySelector('#telemetry dd[data-key="status"]').textContent}"` };
+  }, metres, options);
+}
+
+/** The simulated time the clock shows [s]. */
+export const clock = (page) => page.$eval('#sim-time', (e) => parseFloat(e.textContent));
+
+/**
+ * Waits until the clock shows at least `seconds` of simulated time (the clock must run);
+ * returns what it shows.
+ */
+export function shownClock(page, seconds, options = {}) {
+  return until(page, `the clock to show ${seconds.toFixed(3)} s`, (s) => {
+    const t = document.getElementById('sim-time').textContent;
+    return { ok: parseFloat(t) >= s - 1e-9, value: parseFloat(t), shown: `the clock at ${t}${window.rtnav.demo.paused() ? ', paused' : ''}` };
+  }, seconds, options);
+}
+
+/** Waits until the clock shows `seconds` more simulated time than it does now. */
+export async function clockRuns(page, seconds, options = {}) {
+  return shownClock(page, (await clock(page)) + seconds, options);
+}
+
+/**
+ * Waits until the log shows at least `n` entries of `kind`; returns their texts, oldest
+ * first.
+ */
+export function shownLogged(page, kind, n = 1, options = {}) {
+  return until(page, `${n} ${kind} line(s) in the log`, (a) => {
+    const lines = [...document.querySelectorAll(`#events li[data-kind="${a.kind}"] .text`)].map((i) => i.textContent).reverse();
+    return { ok: lines.length >= a.n, value: lines, shown: `${lines.length}: ${JSON.stringify(lines.slice(-5))}` };
+  }, { kind, n }, options);
+}
+
+/**
+ * `promise`, or a failure saying what was awaited (`what`) if it has not settled within
+ * `timeout` ms (for what the test itself awaits: a dialog, a download).
+ */
+export async function within(promise, what, { timeout = WAIT.timeout } = {}) {
+  let timer;
+  const late = new Promise((_, fail) => {
+    timer = setTimeout(() => fail(new assert.AssertionError({ message: `waited ${timeout / 1000} s for ${what}` })), timeout);
+  });
+  try {
+    return await Promise.race([promise, late]);
+  } finally {
+    clearTimeout(timer);
+  }
+}
+
+/** Waits until the parameter panel shows its rows (it fills them in the first frame it is shown). */
+export function shownParams(page, options = {}) {
+  return until(page, 'the parameter panel\'s rows', () => {
+    const n = document.querySelectorAll('#params-panel .param').length;
+    return { ok: n >= 30 && document.getElementById('pd-explain') !== null, value: n, shown: `${n} parameters` };
+  }, null, options);
 }
 
 /** Saves a screenshot in tests/e2e/out/ (and, for the README's, docs/ with UPDATE_SCREENSHOTS=1). */
@@ -113,23 +246,38 @@ export function cellToPage(page, [x, y]) {
   }, [x, y]);
 }
 
-/** Shows the side panel's tab `name` (rtc, params, inspector, plots, log). */
+/**
+ * Shows the side panel's tab `name` (rtc, system, params, inspector, plots, log); for the
+ * parameters, waits for their rows too.
+ */
 export async function showTab(page, name) {
   await page.click(`#tab-${name}`);
   await page.waitForSelector(`#panel-tabs [aria-selected="true"]#tab-${name}`, WAIT);
+  if (name === 'params') await shownParams(page);
 }
 
 /** Waits until component `name`'s row shows `state`, in the RT System Editor's colour. */
-export async function expectState(page, name, state) {
-  const row = `#components li[data-component="${name}"]`;
-  await page.waitForSelector(`${row}[data-state="${state}"]`, WAIT);
-  const badge = await page.$eval(`${row} .state-badge`, (e) => [e.textContent, getComputedStyle(e).backgroundColor]);
-  assert.deepEqual(badge, [state, COLOURS[state]], `${name} in ${state}`);
+export async function expectState(page, name, state, options = {}) {
+  const badge = await until(page, `${name}'s row to show ${state}`, (a) => {
+    const row = document.querySelector(`#components li[data-component="${a.name}"]`);
+    const b = row?.querySelector('.state-badge');
+    const value = b ? [row.dataset.state, b.textContent, getComputedStyle(b).backgroundColor] : null;
+    return { ok: value?.[0] === a.state, value, shown: JSON.stringify(value) };
+  }, { name, state }, options);
+  assert.deepEqual(badge, [state, state, COLOURS[state]], `${name} in ${state}`);
+}
+
+/** Waits until the system bar shows the whole system in `state`. */
+export function systemShows(page, state, options = {}) {
+  return until(page, `the system bar to show ${state}`, (s) => {
+    const e = document.getElementById('system-state');
+    return { ok: e.dataset.state === s, shown: `${e.dataset.state}: "${e.textContent}"` };
+  }, state, options);
 }
 
 export async function activateAll(page) {
   await page.click('#activate-all');
-  await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
+  await systemShows(page, 'Active');
 }
 
 /** The log entries of `kind`, oldest first. */

@@ -10,7 +10,7 @@
 // Japanese go to docs/ (UPDATE_SCREENSHOTS=1).
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { WAIT, launch, openPage, screenshot, showTab, frames, layoutProblems, telemetry, mapInfo, cellToPage, solidObstacleCell } from './helpers.mjs';
+import { WAIT, DRIVE, launch, openPage, screenshot, showTab, frames, layoutProblems, telemetry, mapInfo, cellToPage, solidObstacleCell, shownDriven } from './helpers.mjs';
 
 const browsers = [];
 after(async () => {
@@ -97,6 +97,7 @@ function english(text, names) {
 async function checkAllTabs(page, names, where) {
   for (const tab of TABS) {
     await showTab(page, tab);
+    if (tab === 'system') await page.waitForSelector('#system-diagram .sys-box[data-component="DriveControl"]', WAIT);
     await frames(page, 3);
     if (tab === 'inspector') {
       // A cell under the mouse, so the inspector shows its rows.
@@ -118,7 +119,7 @@ async function checkAllTabs(page, names, where) {
 }
 
 /** Waits for a log entry of `kind`; returns its text. */
-async function waitLogged(page, kind, timeout = 60_000) {
+async function waitLogged(page, kind, timeout = 90_000) {
   await page.waitForSelector(`#events li[data-kind="${kind}"]`, { state: 'attached', timeout });
   return page.$eval(`#events li[data-kind="${kind}"] .text`, (e) => e.textContent);
 }
@@ -216,7 +217,7 @@ async function pick(page, name) {
 }
 
 for (const [width, height] of [[1280, 800], [390, 844]]) {
-  test(`the page in Japanese at ${width}×${height}: every tab, every event and refusal said in Japanese, nothing overlapping`, { timeout: 400_000 }, async () => {
+  test(`the page in Japanese at ${width}×${height}: every tab, every event and refusal said in Japanese, nothing overlapping`, { timeout: 600_000 }, async () => {
     const b = await launch({ locale: 'ja-JP', viewport: { width, height } });
     browsers.push(b);
     const { page, problems } = await openPage(b.context, '?lang=ja');
@@ -244,7 +245,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.click('#activate-all');
     // The scenario's timeline injects a fault into DriveControl after 8 s: Error.
     seen.fault = await waitLogged(page, 'FaultInjected');
-    await page.waitForSelector('#components li[data-component="DriveControl"][data-state="Error"]', { timeout: 60_000 });
+    await page.waitForSelector('#components li[data-component="DriveControl"][data-state="Error"]', { timeout: 90_000 });
     seen.componentError = await waitLogged(page, 'ComponentError');
     await checkAllTabs(page, names, `${width}×${height}, a fault`);
     // Reset and Activate, then the robot arrives.
@@ -252,8 +253,8 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.click('#components li[data-component="DriveControl"] button.act');
     await page.waitForSelector('#components li[data-component="DriveControl"][data-state="Inactive"]', WAIT);
     await page.click('#components li[data-component="DriveControl"] button.act');
-    seen.arrived = await waitLogged(page, 'Arrived', 120_000);
-    await page.waitForSelector('#exercise .exercise-verdict:is([data-verdict="passed"], [data-verdict="failed"])', { timeout: 60_000 });
+    seen.arrived = await waitLogged(page, 'Arrived', DRIVE.timeout);
+    await page.waitForSelector('#exercise .exercise-verdict:is([data-verdict="passed"], [data-verdict="failed"])', DRIVE);
     await checkAllTabs(page, names, `${width}×${height}, arrived`);
     const lines = [...planningLines, ...await logLines(page)];
     assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
@@ -277,7 +278,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.selectOption('#speed', '1');
     await page.click('#activate-all');
     await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
-    await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.3, null, WAIT);
+    await shownDriven(page, 0.3);
     // Paused while the obstacle is painted on the robot (a slow machine must not let it drive
     // off first); the next tick touches it.
     await page.click('#pause');
@@ -290,6 +291,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.$eval('#overlay', (c) => c.scrollIntoView({ block: 'center' }));
     const [px, py] = await cellToPage(page, at);
     await page.mouse.click(px, py);
+    await page.waitForFunction(([x, y]) => window.rtnav.demo.cell(x, y) === 1, at, WAIT);
     await page.click('#tool-pan');
     await page.click('#pause');
     seen.bump = await waitLogged(page, 'Bump');

@@ -12,7 +12,7 @@
 //   inspector row that repeats another; with the Pan tool a tap inspects the cell.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { WAIT, launch, openPage, cellToPage, activateAll, showTab, frames, telemetry } from './helpers.mjs';
+import { WAIT, launch, openPage, cellToPage, activateAll, showTab, frames, until, shownStatus } from './helpers.mjs';
 
 let browser;
 before(async () => {
@@ -36,8 +36,7 @@ test('in Japanese the status names the component in Error and why; the RTC panel
   const { page, problems } = await openPage(browser.context, '?lang=ja');
   await activateAll(page);
   await fault(page, 'DriveControl');
-  const status = await page.textContent('#telemetry dd[data-key="status"]');
-  assert.match(status, /^DriveControl0 が Error：注入された故障：.+（リセットで復帰）$/, status);
+  const { text: status } = await shownStatus(page, /^DriveControl0 が Error：注入された故障：.+（リセットで復帰）$/, ['component_error']);
   assert.deepEqual(latin(status), [], status);
   assert.equal(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'Error 状態：実行していない');
   assert.deepEqual(problems, []);
@@ -60,14 +59,18 @@ test('in English the status is the core\'s text, and the catalogue\'s status wor
     look();
   });
   await activateAll(page);
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).driving, null, WAIT);
+  await page.waitForSelector('#telemetry[data-driving="true"]', WAIT);
   await page.click('#safe-mode');
-  await frames(page, 3);
-  await page.click('#activate-all').catch(() => {});
+  const seenStatus = (what, re) => until(page, `a status ${what} seen`, (re) => {
+    const seen = [...window.__statuses.keys()];
+    return { ok: seen.some((s) => new RegExp(re).test(s)), shown: JSON.stringify(seen) };
+  }, re.source);
+  await seenStatus('halted by SafeMode', /^halted by SafeMode/);
   const goal = await cellToPage(page, [60, 150]);
   await page.mouse.click(goal[0], goal[1]);
   await frames(page, 10);
   await fault(page, 'MotorControl');
+  await seenStatus('of MotorControl0 in Error', /^MotorControl0 in Error: /);
   await page.click('#reset-all');
   await frames(page, 3);
   const seen = await page.evaluate(() => [...window.__statuses.entries()]);
@@ -161,10 +164,14 @@ test('a notice lets clicks through to the map, keeps its button, and keeps off t
   assert.ok(top, 'a free cell under the notice');
   await page.click('#tool-goal');
   await page.mouse.click(top[0], top[1]);
-  await page.waitForFunction(() => document.getElementById('notice').dataset.place === 'bottom', null, WAIT);
-  const [notice, goal] = await page.evaluate(() => [document.getElementById('notice').getBoundingClientRect().toJSON(), window.rtnav.app.stage.keepClear().at(-1)]);
-  assert.ok(goal && (notice.bottom <= goal.top || notice.top >= goal.bottom || notice.right <= goal.left || notice.left >= goal.right),
-    `the notice ${JSON.stringify(notice)} covers the goal ${JSON.stringify(goal)}`);
+  // The goal's notice, at the bottom, off the new goal.
+  await until(page, 'the goal\'s notice at the bottom, off the goal', () => {
+    const n = document.getElementById('notice');
+    const box = n.getBoundingClientRect();
+    const goal = window.rtnav.app.stage.keepClear().at(-1);
+    const off = Boolean(goal) && (box.bottom <= goal.top || box.top >= goal.bottom || box.right <= goal.left || box.left >= goal.right);
+    return { ok: !n.hidden && n.dataset.place === 'bottom' && off, shown: `the notice "${n.textContent.trim()}" ${n.hidden ? 'hidden' : `at the ${n.dataset.place}`}, ${JSON.stringify(box)}, the goal at ${JSON.stringify(goal)}` };
+  });
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -176,13 +183,13 @@ test('a notice that would cover the goal at the top and the robot at the bottom 
   await page.selectOption('#scenario', 'ex_door_dmin');
   await page.waitForFunction(() => window.rtnav.scenarios.current === 'ex_door_dmin', null, WAIT);
   await page.waitForSelector('#notice:not([hidden])', WAIT);
-  await frames(page, 3);
-  const [notice, clear] = await page.evaluate(() => [document.getElementById('notice').getBoundingClientRect().toJSON(), window.rtnav.app.stage.keepClear()]);
-  assert.equal(clear.length, 2, 'the robot and the goal');
-  for (const c of clear) {
-    assert.ok(notice.bottom <= c.top || notice.top >= c.bottom || notice.right <= c.left || notice.left >= c.right,
-      `the notice ${JSON.stringify(notice)} covers ${JSON.stringify(c)}`);
-  }
+  await until(page, 'the notice off the robot and the goal', () => {
+    const n = document.getElementById('notice');
+    const box = n.getBoundingClientRect();
+    const clear = window.rtnav.app.stage.keepClear();
+    const covered = clear.filter((c) => !(box.bottom <= c.top || box.top >= c.bottom || box.right <= c.left || box.left >= c.right));
+    return { ok: !n.hidden && clear.length === 2 && covered.length === 0, shown: `the notice ${n.hidden ? 'hidden' : `at ${n.dataset.place} ${n.dataset.align}`} ${JSON.stringify(box)}, ${clear.length} boxes to keep clear, covering ${JSON.stringify(covered)}` };
+  });
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -234,14 +241,14 @@ test('one wording for the clock button; no "-0"; no repeated inspector row; a ta
   const phone = await launch({ viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true, deviceScaleFactor: 2 });
   try {
     const { page, problems } = await openPage(phone.context, '?lang=en');
-    const words = () => page.evaluate(() => [document.getElementById('pause').textContent, document.getElementById('tl-play').textContent]);
-    await page.evaluate(() => window.rtnav.demo.set_paused(true));
-    await frames(page, 20);
-    await page.evaluate(() => window.rtnav.timeline.update());
-    await page.waitForFunction(() => document.getElementById('tl-play').textContent === document.getElementById('pause').textContent, null, WAIT);
-    assert.deepEqual(await words(), ['Run', 'Run']);
-    await page.evaluate(() => window.rtnav.demo.set_paused(false));
-    await page.waitForFunction(() => document.getElementById('tl-play').textContent === 'Pause' && document.getElementById('pause').textContent === 'Pause', null, WAIT);
+    const bothSay = (word) => until(page, `the system bar's and the timeline's clock buttons to say "${word}"`, (w) => {
+      const said = [document.getElementById('pause').textContent, document.getElementById('tl-play').textContent];
+      return { ok: said[0] === w && said[1] === w, shown: JSON.stringify(said) };
+    }, word);
+    await page.click('#pause');
+    await bothSay('Run');
+    await page.click('#pause');
+    await bothSay('Pause');
 
     // Numbers that round to zero are 0.
     const zeros = await page.evaluate(async () => {

@@ -9,7 +9,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  WAIT, COLOURS, launch, openPage, screenshot, showTab, activateAll, logged, telemetry,
+  WAIT, COLOURS, launch, openPage, screenshot, showTab, activateAll, until, shownDriven, shownLogged, driven,
 } from './helpers.mjs';
 
 let browser;
@@ -33,15 +33,6 @@ const COMPONENTS = ['MapBuilder', 'MapMaintenance', 'PhysicsSim', 'MotorControl'
 const TARGET_VELOCITY = 'DriveControl.TargetVelocity->MotorControl.TargetVelocity';
 const row = (component, port) => `#system-diagram .sys-port-row[data-component="${component}"][data-port="${port}"]`;
 const box = (component) => `#system-diagram .sys-box[data-component="${component}"]`;
-
-/** Hovers MotorControl's TargetVelocity and returns the tooltip's sample line. */
-async function velocityTip(page) {
-  await page.mouse.move(0, 0);
-  await page.hover(row('MotorControl', 'TargetVelocity'));
-  await page.waitForSelector('#system-tip:not([hidden])', WAIT);
-  const lines = await page.$$eval('#system-tip > div', (ds) => ds.map((d) => d.textContent));
-  return lines;
-}
 
 /** MotorControl's status line as the System view shows it. */
 const motorStatus = (page) => page.$eval(`${box('MotorControl')} .sys-status`, (e) => e.dataset.full ?? e.textContent);
@@ -94,22 +85,30 @@ test('the System view: components, seed ports, live samples, lifecycle on a box,
   // Drive: the tooltip of TargetVelocity shows a TimedVelocity whose vx changes.
   await activateAll(page);
   await page.selectOption('#speed', '2');
+  await page.mouse.move(0, 0);
+  await page.hover(row('MotorControl', 'TargetVelocity'));
+  await page.waitForSelector('#system-tip:not([hidden])', WAIT);
+  // The tooltip stays up under the mouse and shows each new sample: every line it shows is
+  // kept (in the page, at every frame) until the samples' vx has changed.
+  const tips = await until(page, 'TargetVelocity\'s tooltip to show samples whose vx changes', () => {
+    const tips = window.__velocityTips ?? (window.__velocityTips = []);
+    const lines = [...document.querySelectorAll('#system-tip > div')].map((d) => d.textContent);
+    const last = tips.at(-1);
+    if (!last || last[0] !== lines[0] || last[1] !== lines[1]) tips.push(lines);
+    const samples = tips.filter(([, s]) => s && !s.includes('no sample yet'));
+    const vx = new Set(samples.map(([, s]) => s.match(/vx: (-?[\d.]+)/)?.[1]));
+    return { ok: samples.length >= 3 && vx.size >= 2, value: tips, shown: JSON.stringify(tips.slice(-4)) };
+  }, null, { timeout: 60_000 });
   const seen = [];
   const vx = new Set();
-  for (let i = 0; i < 40 && vx.size < 3; i++) {
-    const tip = await velocityTip(page);
-    assert.equal(tip[0], 'MotorControl.TargetVelocity · data in · TimedVelocity');
-    // Read before the first tick after the activation (the page may still be drawing the
-    // plan the activation made): no sample yet, so look again.
-    if (seen.length === 0 && tip[1].includes('no sample yet')) {
-      await page.waitForTimeout(100);
-      continue;
-    }
-    const m = tip[1].match(/^TimedVelocity \{tm: (\d+\.\d{3}) s, vx: (-?[\d.]+), vy: (-?[\d.]+), w: (-?[\d.]+)\}$/);
-    assert.ok(m, `a TimedVelocity sample: ${tip[1]}`);
-    seen.push(tip[1]);
+  for (const [head, sample] of tips) {
+    assert.equal(head, 'MotorControl.TargetVelocity · data in · TimedVelocity');
+    // Shown before the first tick after the activation: no sample yet.
+    if (seen.length === 0 && sample.includes('no sample yet')) continue;
+    const m = sample.match(/^TimedVelocity \{tm: (\d+\.\d{3}) s, vx: (-?[\d.]+), vy: (-?[\d.]+), w: (-?[\d.]+)\}$/);
+    assert.ok(m, `a TimedVelocity sample: ${sample}`);
+    seen.push(sample);
     vx.add(m[2]);
-    await page.waitForTimeout(300);
   }
   console.log(`TargetVelocity samples seen: ${seen.length}, vx values: ${[...vx].join(', ')}`);
   assert.ok(vx.size >= 2, `vx changes while the robot drives: ${seen.join(' | ')}`);
@@ -120,7 +119,8 @@ test('the System view: components, seed ports, live samples, lifecycle on a box,
   await page.click(row('MotorControl', 'TargetVelocity'));
   await page.waitForSelector('#system-details li[data-id="DriveControl.TargetVelocity->MotorControl.TargetVelocity"]', WAIT);
   await page.hover(row('MotorControl', 'TargetVelocity'));
-  await page.waitForTimeout(400);
+  await page.waitForSelector(`#system-diagram path.sys-line.hot[data-id="${TARGET_VELOCITY}"]`, { state: 'attached', ...WAIT });
+  await page.waitForSelector('#system-tip:not([hidden])', WAIT);
   await screenshot(page, 'system-view.png');
 
   // Cut TargetVelocity: logged; MotorControl reports its safe stop.
@@ -130,7 +130,7 @@ test('the System view: components, seed ports, live samples, lifecycle on a box,
   const stopped = await motorStatus(page);
   assert.match(stopped, /safe stop, zero torque: .*TargetVelocity/);
   await showTab(page, 'log');
-  const cuts = await logged(page, 'ConnectionCut');
+  const cuts = await shownLogged(page, 'ConnectionCut');
   assert.deepEqual(cuts, ['connection DriveControl.TargetVelocity → MotorControl.TargetVelocity cut: no sample passes']);
   await showTab(page, 'system');
   await screenshot(page, 'system-cut.png', { docs: false });
@@ -140,10 +140,9 @@ test('the System view: components, seed ports, live samples, lifecycle on a box,
   await page.click(`#system-details li[data-id="${TARGET_VELOCITY}"] button.restore`);
   await page.waitForSelector(`#system-diagram path.sys-line[data-id="${TARGET_VELOCITY}"]:not(.cut)`, WAIT);
   await page.waitForFunction(() => /running/.test(document.querySelector('#system-diagram .sys-box[data-component="MotorControl"] .sys-status')?.textContent ?? ''), null, WAIT);
-  const from = (await telemetry(page)).path_length;
-  await page.waitForFunction((from) => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > from + 0.5, from, WAIT);
+  await shownDriven(page, (await driven(page)) + 0.5);
   await showTab(page, 'log');
-  assert.equal((await logged(page, 'ConnectionRestored')).length, 1);
+  assert.equal((await shownLogged(page, 'ConnectionRestored')).length, 1);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -156,7 +155,7 @@ for (const [w, h] of [[1280, 800], [768, 1024], [390, 844]]) {
       await showTab(page, 'system');
       await page.waitForSelector(row('MotorControl', 'TargetVelocity'), WAIT);
       await activateAll(page);
-      await page.waitForTimeout(1500);
+      await shownDriven(page, 0.2);
       // The picture is as wide as its panel (scaled, never cut off).
       const fit = await page.evaluate(() => {
         const svg = document.querySelector('#system-diagram svg').getBoundingClientRect();

@@ -20,7 +20,8 @@ import { join } from 'node:path';
 import { promisify } from 'node:util';
 import {
   REPO, WAIT, launch, openPage, screenshot, json, plan, cellToPage, showTab, expectState,
-  activateAll, frames, canvasHash, keepCanvas, canvasDiff,
+  activateAll, frames, canvasHash, keepCanvas, canvasDiff, logged, shownLogged, shownDriven,
+  shownText, clockRuns,
 } from './helpers.mjs';
 
 const run = promisify(execFile);
@@ -73,19 +74,27 @@ test('PostureConsiderationLevel 0 → 100 while the robot stands: re-planned, th
   await expectState(page, 'DriveControl', 'Inactive');
   await page.evaluate(() => window.rtnav.setFrameSize(960, 600));
 
-  await setParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 0);
-  await shown(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 0);
+  /**
+   * Sets the level and waits until the page has logged the plan made with it, a second of
+   * simulated time has passed (no plan comes later) and the page has drawn since.
+   */
+  const level = async (value) => {
+    const plans = (await logged(page, 'LocalPlanSent')).length;
+    await setParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', value);
+    await shown(page, 'LocalPathPlanning', 'PostureConsiderationLevel', value);
+    await shownLogged(page, 'LocalPlanSent', plans + 1);
+    await clockRuns(page, 1);
+    await frames(page, 3);
+  };
+  await level(0);
   let list = await params(page);
   assert.equal(param(list, 'LocalPathPlanning', 'PostureConsiderationLevel').effective, 0);
-  await frames(page, 3);
   const raw0 = await page.evaluate(() => window.rtnav.demo.plan_json());
   await keepCanvas(page, 'level0');
 
-  await setParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 100);
-  await shown(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 100);
   // The next plan is made with the new value: at once, since the robot stands.
-  await page.waitForFunction((before) => window.rtnav.demo.plan_json() !== before, raw0, WAIT);
-  await frames(page, 3);
+  await level(100);
+  assert.notEqual(await page.evaluate(() => window.rtnav.demo.plan_json()), raw0);
   await keepCanvas(page, 'level100');
   list = await params(page);
   const p = param(list, 'LocalPathPlanning', 'PostureConsiderationLevel');
@@ -158,7 +167,7 @@ test('PGainL while driving changes the torques and their plot; lengthOfAxle wait
   assert.match(await page.textContent(`${row('MotorControl', 'lengthOfAxle')} .pending-tag`), /^pending \(next activation\)/);
   let axle = param(await params(page), 'MotorControl', 'lengthOfAxle');
   assert.deepEqual([axle.value, axle.effective, axle.pending, axle.reflection], [0.5, 0.441, true, 'on_activation']);
-  await page.waitForTimeout(600);
+  await clockRuns(page, 0.5);
   axle = param(await params(page), 'MotorControl', 'lengthOfAxle');
   assert.deepEqual([axle.effective, axle.pending], [0.441, true], 'still waiting while Active');
   await page.$eval(row('MotorControl', 'lengthOfAxle'), (e) => e.scrollIntoView({ block: 'center' }));
@@ -177,7 +186,9 @@ test('PGainL while driving changes the torques and their plot; lengthOfAxle wait
   await page.waitForSelector(`${row('MotorControl', 'lengthOfAxle')}[data-pending="false"]:not(.pending)`, WAIT);
   assert.equal(await page.isVisible(`${row('MotorControl', 'lengthOfAxle')} .pending-tag`), false);
   await showTab(page, 'plots');
-  await page.waitForTimeout(300);
+  // Drawn again since the tab was shown (it redraws while shown and the clock runs).
+  const drawn = await page.getAttribute('#plots-panel', 'data-draws');
+  await page.waitForFunction((n) => document.getElementById('plots-panel').dataset.draws !== n, drawn, WAIT);
   await screenshot(page, 'teach-plots.png');
   assert.deepEqual(problems, []);
   await page.close();
@@ -267,7 +278,7 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   // The clock is paused, so the frame stays the set-up's first one (its caption carries the
   // simulated time); making the link restarts the set-up from it while the robot stands.
   await page.click('#pause');
-  await page.waitForFunction(() => window.rtnav.demo.paused(), null, WAIT);
+  await shownText(page, '#pause', 'Run');
   await page.click('#share-copy');
   await page.waitForSelector('#share-link:not([hidden])', WAIT);
   const link = await page.inputValue('#share-link');
@@ -378,7 +389,7 @@ test('an exported .conf imported again restores the configuration; refused value
 test('Telemetry CSV and Frame PNG download', { timeout: 60_000 }, async () => {
   const { page, problems } = await open();
   await activateAll(page);
-  await page.waitForFunction(() => JSON.parse(window.rtnav.demo.telemetry_json()).path_length > 0.2, null, WAIT);
+  await shownDriven(page, 0.2);
   const [csv] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
   assert.equal(csv.suggestedFilename(), 'rtnav-telemetry.csv');
   const lines = (await readFile(await csv.path(), 'utf8')).trim().split('\n');

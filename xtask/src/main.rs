@@ -11,6 +11,7 @@
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask test [--stage WORD]  every check CI runs (or those named), with a summary
+//! cargo xtask e2e [FILE...]       the page's build and the browser tests alone
 //! cargo xtask types               write web/types from the Rust views, type-check the page
 //! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
@@ -61,6 +62,8 @@ commands:
                        type check and
                        the browser end-to-end tests (against the dist folder, served under
                        a sub-path); --stage runs only the stages whose name has WORD
+  e2e [FILE...]        the page's build and the browser end-to-end tests alone (only
+                       the named tests/e2e files, e.g. page.test.mjs, if any)
   fuzz [--seconds N] [--seed S] [--target NAME]...
                        fuzz the readers and the hostile calls in release mode for N s in
                        all (default 300); prints per target the inputs tried, the failures
@@ -145,6 +148,7 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             return Ok(test::run_all(&only));
         }
         "types" => types::types()?,
+        "e2e" => return Ok(test::run_e2e(rest)),
         "bench" => bench::run_all(rest)?,
         "fuzz" => fuzz::fuzz(rest)?,
         "soak" => soak::soak(rest)?,

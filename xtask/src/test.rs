@@ -219,6 +219,33 @@ pub(crate) fn e2e_dir() -> PathBuf {
 /// served by a plain static server under `/rtnav/`; the native runner built by the test
 /// stage answers the tests that compare the page with the core.
 fn e2e() -> Result<Option<String>> {
+    e2e_files(&[])
+}
+
+/// `cargo xtask e2e [FILE...]`: the page stage, then the browser stage alone (only the named
+/// `tests/e2e` files, if any), with the time each took.
+pub fn run_e2e(files: &[String]) -> ExitCode {
+    let started = Instant::now();
+    let mut prefetch = Prefetch::start();
+    prefetch.finish();
+    let result = page().and_then(|_| {
+        println!("==> page built in {:.1} s", started.elapsed().as_secs_f64());
+        let t = Instant::now();
+        let r = e2e_files(files);
+        println!("==> browser tests took {:.1} s", t.elapsed().as_secs_f64());
+        r
+    });
+    match result {
+        Ok(_) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("xtask e2e: FAILED: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The browser stage over `only` (file names in `tests/e2e`), or every `*.test.mjs` there.
+fn e2e_files(only: &[String]) -> Result<Option<String>> {
     tools::ensure_node()?;
     tools::ensure_chromium()?;
     // The lockfile pins playwright-core; it must never download a browser of its own.
@@ -244,10 +271,15 @@ fn e2e() -> Result<Option<String>> {
     let mut tests: Vec<PathBuf> = std::fs::read_dir(e2e_dir())?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.to_string_lossy().ends_with(".test.mjs"))
+        .filter(|p| {
+            only.is_empty()
+                || p.file_name()
+                    .is_some_and(|n| only.iter().any(|o| n.to_string_lossy() == o.as_str()))
+        })
         .collect();
     tests.sort();
     if tests.is_empty() {
-        return Err("no tests/e2e/*.test.mjs files".into());
+        return Err(format!("no tests/e2e/*.test.mjs files (asked for {only:?})").into());
     }
     let result = run(cmd("node")
         .arg("--test")
