@@ -71,7 +71,7 @@ test('the default scenario is drawn, and Activate all drives the robot to the go
   await page.click('#pause');
   await page.selectOption('#speed', '16');
   await page.waitForSelector('#telemetry[data-arrived="true"]', DRIVE);
-  await shownStatus(page, /^Arrived$/, ['arrived']);
+  await shownStatus(page, /^Arrived: the robot rests at the goal$/, ['arrived']);
   const t = await telemetry(page);
   assert.ok(t.distance_to_goal < 0.1, `arrived ${t.distance_to_goal} m from the goal`);
   assert.equal(t.bumps, 0);
@@ -230,7 +230,7 @@ test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', {
   const reason = await page.textContent('#components li[data-component="PhysicsSim"] .rtc-reason');
   assert.match(reason, /^Reason: bump: /);
   assert.equal((await shownLogged(page, 'Bump')).length, 1);
-  await shownStatus(page, /^PhysicsSim0 in Error: bump: .+ \(Reset recovers\)$/);
+  await shownStatus(page, /^PhysicsSim0 in Error: bump: .+ \(Reset recovers\); the robot \w+$/);
   const goal = (await plan(page)).goal;
   const pose = (await telemetry(page)).pose;
   await page.click('#reset-all');
