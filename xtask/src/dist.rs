@@ -6,13 +6,20 @@
 //! (`fixtures/`, as `crate::fixtures` stages them: the repository's, and the external data's
 //! when it is there). Every URL the page uses is relative to the page, so the folder can be
 //! served under any sub-path; nothing needs a special header (a server that does not send
-//! `application/wasm` for `.wasm` only costs wasm-bindgen's streaming compile).
+//! `application/wasm` for `.wasm` only costs the streaming compile).
+//!
+//! Two things are written last, from the folder's files: the service worker's build
+//! (`sw.js`: every file with its SHA-256 and the build's version, `crate::service_worker`),
+//! and the precompressed copies beside the files (`NAME.br`, `NAME.gz`:
+//! `crate::precompress`). `cargo xtask dist --seal DIR` writes both again for a folder whose
+//! files were changed by hand.
 
 use std::path::{Path, PathBuf};
 
 use crate::Result;
 use crate::tools;
 use crate::wasm;
+use crate::{precompress, service_worker};
 
 /// The folder `cargo xtask dist` writes when not told.
 pub fn default_dir() -> PathBuf {
@@ -58,11 +65,27 @@ pub fn assemble(dir: &Path) -> Result {
     }
     let n = crate::fixtures::stage_into(&tools::repo_root(), &dir.join("fixtures"))?;
     check_relative(dir)?;
+    seal(dir)?;
     println!(
         "xtask: {} written: the page, the wasm and {n} scenarios (serve it from any static \
          server, under any path)",
         dir.display()
     );
+    Ok(())
+}
+
+/// Writes the service worker's build and the precompressed copies of the folder `dir` (last:
+/// they are made from its files as they are).
+pub fn seal(dir: &Path) -> Result {
+    let sealed = service_worker::seal(dir)?;
+    println!(
+        "xtask: offline build {}: {} files, {:.0} KB, kept by the service worker",
+        sealed.version,
+        sealed.files,
+        sealed.bytes as f64 / 1000.0
+    );
+    let written = precompress::write_beside(dir)?;
+    println!("xtask: precompressed copies (.br, .gz) of {written}");
     Ok(())
 }
 

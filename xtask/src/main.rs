@@ -10,6 +10,7 @@
 //! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
+//! cargo xtask dist --seal DIR     its offline build and precompressed copies, written again
 //! cargo xtask test                every check CI runs, with a summary
 //! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
@@ -20,14 +21,16 @@ mod bench;
 mod dist;
 mod fixtures;
 mod fuzz;
+mod precompress;
 mod prefetch;
 mod serve;
+mod service_worker;
 mod soak;
 mod test;
 mod tools;
 mod wasm;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Errors are reported to the user as text; nothing here recovers from them.
@@ -45,7 +48,10 @@ commands:
                        the scenario fixtures and their maps into web/fixtures
   serve [--port N]     copy the fixtures and serve web/ without building
   dist [DIR]           build the wasm and write the page, the wasm and the scenarios
-                       as a static folder for any static host (default dist/)
+                       as a static folder for any static host (default dist/), with
+                       precompressed copies (.br, .gz) and the service worker's build
+  dist --seal DIR      write the service worker's build and the precompressed copies of
+                       a dist folder again, after its files were changed by hand
   bench [--no-wasm] [--no-browser]
                        the performance table of docs/performance.md: criterion benches
                        with their baselines, the same operations in wasm32 under Node,
@@ -119,12 +125,16 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
             prefetch::run_steps()?;
         }
         "dist" => {
-            let dir = match rest {
-                [] => dist::default_dir(),
-                [dir] if !dir.starts_with('-') => PathBuf::from(dir),
+            match rest {
+                [] => {
+                    dist::build(&dist::default_dir())?;
+                }
+                [dir] if !dir.starts_with('-') => {
+                    dist::build(Path::new(dir))?;
+                }
+                [flag, dir] if flag == "--seal" => dist::seal(Path::new(dir))?,
                 _ => return Err(format!("dist: unexpected arguments {rest:?}").into()),
-            };
-            dist::build(&dir)?;
+            }
         }
         "test" => {
             if !rest.is_empty() {
