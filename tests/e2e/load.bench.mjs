@@ -38,7 +38,6 @@ async function coldLoad(compressed) {
     });
     const cdp = await browser.context.newCDPSession(page);
     await cdp.send('Network.enable');
-    await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
     await cdp.send('Network.emulateNetworkConditions', NETWORK);
     if (!compressed) await cdp.send('Network.setExtraHTTPHeaders', { headers: { 'Accept-Encoding': 'identity' } });
     const encodings = new Set();
@@ -46,8 +45,13 @@ async function coldLoad(compressed) {
       const h = Object.fromEntries(Object.entries(e.response.headers).map(([k, v]) => [k.toLowerCase(), v]));
       encodings.add(h['content-encoding'] ?? 'identity');
     });
+    const problems = [];
+    page.on('pageerror', (e) => problems.push(e.message));
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
     await page.goto(URL, { waitUntil: 'commit', timeout: 120_000 });
-    await page.waitForFunction(() => window.__drawnAt !== undefined, null, { timeout: 120_000, polling: 50 });
+    await page.waitForSelector('body[data-ready="true"], #crash:not([hidden])', { timeout: 120_000 });
+    assert.equal(await page.isVisible('#crash'), false, `the page did not start: ${problems.join('\n')}`);
+    await page.waitForFunction(() => window.__drawnAt !== undefined, null, { timeout: 10_000, polling: 50 });
     const result = await page.evaluate(() => {
       const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
       return {

@@ -11,6 +11,7 @@
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
 //! cargo xtask dist --seal DIR     its offline build and precompressed copies, written again
+//! cargo xtask dist --no-build DIR the folder from the wasm already built in web/pkg
 //! cargo xtask test                every check CI runs, with a summary
 //! cargo xtask bench               the performance table (docs/performance.md)
 //! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
@@ -52,6 +53,8 @@ commands:
                        precompressed copies (.br, .gz) and the service worker's build
   dist --seal DIR      write the service worker's build and the precompressed copies of
                        a dist folder again, after its files were changed by hand
+  dist --no-build DIR  write the folder from the wasm already in web/pkg (built by
+                       `build-wasm`, release or --dev), without building it
   bench [--no-wasm] [--no-browser]
                        the performance table of docs/performance.md: criterion benches
                        with their baselines, the same operations in wasm32 under Node,
@@ -124,18 +127,17 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
         prefetch::COMMAND => {
             prefetch::run_steps()?;
         }
-        "dist" => {
-            match rest {
-                [] => {
-                    dist::build(&dist::default_dir())?;
-                }
-                [dir] if !dir.starts_with('-') => {
-                    dist::build(Path::new(dir))?;
-                }
-                [flag, dir] if flag == "--seal" => dist::seal(Path::new(dir))?,
-                _ => return Err(format!("dist: unexpected arguments {rest:?}").into()),
+        "dist" => match rest {
+            [] => {
+                dist::build(&dist::default_dir())?;
             }
-        }
+            [dir] if !dir.starts_with('-') => {
+                dist::build(Path::new(dir))?;
+            }
+            [flag, dir] if flag == "--seal" => dist::seal(Path::new(dir))?,
+            [flag, dir] if flag == "--no-build" => dist::assemble(Path::new(dir))?,
+            _ => return Err(format!("dist: unexpected arguments {rest:?}").into()),
+        },
         "test" => {
             if !rest.is_empty() {
                 return Err(format!("test: unexpected arguments {rest:?}").into());

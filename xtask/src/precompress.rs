@@ -274,7 +274,12 @@ mod tests {
         let br = brotli(&text);
         assert_eq!(gunzip(&gz), text);
         assert_eq!(unbrotli(&br), text);
-        assert!(br.len() < gz.len() && gz.len() < text.len() / 4, "{} {}", br.len(), gz.len());
+        assert!(
+            br.len() < gz.len() && gz.len() < text.len() / 4,
+            "{} {}",
+            br.len(),
+            gz.len()
+        );
         // gzip's magic number and deflate method.
         assert_eq!(&gz[..3], &[0x1f, 0x8b, 8]);
     }
@@ -321,8 +326,14 @@ mod tests {
         let w = write_beside(&dir).unwrap();
         assert_eq!(w.files, 1, "{w:?}");
         assert_eq!(w.raw, big.len() as u64);
-        assert_eq!(gunzip(&std::fs::read(dir.join("js/big.js.gz")).unwrap()), big.as_bytes());
-        assert_eq!(unbrotli(&std::fs::read(dir.join("js/big.js.br")).unwrap()), big.as_bytes());
+        assert_eq!(
+            gunzip(&std::fs::read(dir.join("js/big.js.gz")).unwrap()),
+            big.as_bytes()
+        );
+        assert_eq!(
+            unbrotli(&std::fs::read(dir.join("js/big.js.br")).unwrap()),
+            big.as_bytes()
+        );
         assert!(!dir.join("small.css.gz").exists() && !dir.join("map.png.gz").exists());
         assert!(is_copy(&dir.join("js/big.js.br")));
         assert!(!is_copy(&dir.join("js/big.js")));
@@ -332,8 +343,14 @@ mod tests {
         let changed = "let b = 2;\n".repeat(500);
         std::fs::write(dir.join("js/big.js"), &changed).unwrap();
         write_beside(&dir).unwrap();
-        assert_eq!(gunzip(&std::fs::read(dir.join("js/big.js.gz")).unwrap()), changed.as_bytes());
-        assert_eq!(unbrotli(&std::fs::read(dir.join("js/big.js.br")).unwrap()), changed.as_bytes());
+        assert_eq!(
+            gunzip(&std::fs::read(dir.join("js/big.js.gz")).unwrap()),
+            changed.as_bytes()
+        );
+        assert_eq!(
+            unbrotli(&std::fs::read(dir.join("js/big.js.br")).unwrap()),
+            changed.as_bytes()
+        );
         std::fs::write(dir.join("js/big.js"), "let c;").unwrap();
         assert_eq!(write_beside(&dir).unwrap().files, 0);
         assert!(!dir.join("js/big.js.gz").exists() && !dir.join("js/big.js.br").exists());

@@ -224,11 +224,7 @@ mod tests {
 
     /// `GET path` with `Accept-Encoding: accept` (none if None) from `root`: the status, the
     /// `Content-Type`, `Content-Encoding` and `Vary` headers, and the body.
-    fn get(
-        root: &Path,
-        path: &str,
-        accept: Option<&str>,
-    ) -> (u16, [Option<String>; 3], Vec<u8>) {
+    fn get(root: &Path, path: &str, accept: Option<&str>) -> (u16, [Option<String>; 3], Vec<u8>) {
         let mut request = Request::builder().uri(path);
         if let Some(a) = accept {
             request = request.header(ACCEPT_ENCODING, a);
@@ -254,7 +250,9 @@ mod tests {
         let root = std::env::temp_dir().join(format!("rtnav-serve-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
         std::fs::create_dir_all(root.join("pkg")).unwrap();
-        let module: Vec<u8> = (0..50_000u32).flat_map(|i| (i % 251).to_le_bytes()).collect();
+        let module: Vec<u8> = (0..50_000u32)
+            .flat_map(|i| (i % 251).to_le_bytes())
+            .collect();
         std::fs::write(root.join("pkg/m.wasm"), &module).unwrap();
         std::fs::write(root.join("map.png"), vec![1u8; 2000]).unwrap();
         precompress::write_beside(&root).unwrap();

@@ -111,8 +111,8 @@ mod tests {
 
     #[test]
     fn the_page_worker_has_one_build_line_and_none_in_web() {
-        let text = std::fs::read_to_string(crate::tools::repo_root().join("web").join(FILE))
-            .unwrap();
+        let text =
+            std::fs::read_to_string(crate::tools::repo_root().join("web").join(FILE)).unwrap();
         let lines: Vec<&str> = text.lines().filter(|l| l.starts_with(BUILD_LINE)).collect();
         assert_eq!(lines, ["const BUILD = null;"]);
         let sealed = with_build(&text, r#"{"version":"x","files":{}}"#).unwrap();
