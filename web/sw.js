@@ -38,11 +38,12 @@ async function fetchChecked(path, digest) {
 }
 
 self.addEventListener('install', (event) => {
+  // Without a build there is nothing to wait for: it replaces an earlier build's worker at once.
+  if (!BUILD) {
+    self.skipWaiting();
+    return;
+  }
   event.waitUntil((async () => {
-    if (!BUILD) {
-      await self.skipWaiting();
-      return;
-    }
     const cache = await caches.open(CACHE);
     const kept = new Set((await cache.keys()).map((r) => r.url));
     // Everything first, then into the cache: a failed install keeps nothing of it.
