@@ -27,6 +27,7 @@ import { createExercisePanel } from './js/panels/exercise.js';
 import { language, switchLanguage, translateStatic, t } from './js/i18n.js';
 import { errorText } from './js/say.js';
 import { keepRun, takeRun, restoreRun } from './js/carry.js';
+import { takeOverWaitingBuild, keepOffline } from './js/offline.js';
 
 /** The element with `id` (the page's HTML has every one these modules ask for). @param {string} id */
 const $ = (id) => /** @type {HTMLElement} */ (document.getElementById(id));
@@ -41,8 +42,11 @@ const STEP_BUDGET_MS = 10;
 const BEHIND_S = 0.05;
 
 async function boot() {
+  // A new build waiting for this load: the page loads again from it (js/offline.js).
+  if (await takeOverWaitingBuild()) return;
   translateStatic();
-  const wasm = await init();
+  // The module index.html began to download and compile as the page opened (else: fetched now).
+  const wasm = await init({ module_or_path: (await window.rtnavWasm) ?? undefined });
   const guard = createCrashGuard($('crash'), $('crash-message'));
   const demo = guard.call(() => new Demo(640, 400));
   if (!demo) return;
@@ -224,6 +228,7 @@ async function boot() {
   await scenarios.loadDefault(new URLSearchParams(location.search).get('share'),
     carried && (() => restoreRun(app, carried)));
   document.body.dataset.ready = 'true';
+  keepOffline(app);
 }
 
 boot().catch((e) => {

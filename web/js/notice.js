@@ -7,7 +7,10 @@
 // by Reset and Activate, and by loading a scenario — ends it at once. Other notices fade after
 // a few seconds; a refusal stays longer, so it can be read. The notice keeps off the robot and
 // the goal: each frame it is placed at the top of the map, or at the bottom, or along a side,
-// wherever it covers fewest of them. Clicks pass through it to the map (its text is no
+// or at a height in between, the first of these where it covers neither (else where it covers
+// fewest). It never takes more than a quarter of the map: a notice that would is made compact
+// (smaller, at most three lines; its whole text stays its title and what a screen reader
+// reads) and, if it must, narrower. Clicks pass through it to the map (its text is no
 // control); only its button takes them (style.css: `pointer-events`).
 const FADE_MS = { info: 5000, success: 5000, warn: 12000, error: 20000 };
 /** Room kept around the robot's body and the goal, CSS pixels. */
@@ -17,8 +20,13 @@ const TOP_REM = 2.6;
 const BOTTOM_REM = 2.3;
 /** Its offset from the map's side when it keeps to the left or right, rem (`data-align`). */
 const EDGE_REM = 0.45;
-/** Where it may go, in order of preference: [top or bottom, centre or side]. */
+/** Where it may go, in order of preference: [top or bottom, centre or side]; then heights in between. */
 const PLACES = [['top', 'center'], ['bottom', 'center'], ['top', 'left'], ['top', 'right'], ['bottom', 'left'], ['bottom', 'right']];
+const ALIGNS = ['center', 'left', 'right'];
+/** The step between the heights in between, CSS pixels. */
+const STEP_PX = 8;
+/** The most of the map's area a notice may cover. */
+const MOST_OF_MAP = 0.25;
 
 const overlaps = (a, b) =>
   a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
@@ -37,18 +45,42 @@ export function createNotice(box, text, close) {
   close.addEventListener('click', hide);
 
   /**
-   * Puts the notice where fewest of `clear` (client boxes: the robot, the goal) are under it:
-   * at the top of the map or at the bottom, in the middle or along the left or right edge —
-   * the first of these places, in that order of preference, with the fewest. The places are
-   * where the style puts it (`data-place`, `data-align`): its `top` or `bottom` offset from
-   * the map's edge, centred or `EDGE_REM` from a side.
+   * Keeps the notice within a quarter of the map `wrap` (its client box): compact if it is
+   * larger, and narrower if it still is.
+   */
+  let fitted = '';
+  function fit(wrap) {
+    // Measured again only when the text or the map's size changed.
+    const key = `${Math.round(wrap.width)}×${Math.round(wrap.height)} ${text.textContent}`;
+    if (key === fitted) return;
+    fitted = key;
+    const most = MOST_OF_MAP * wrap.width * wrap.height;
+    const area = () => box.offsetWidth * box.offsetHeight;
+    if (box.dataset.compact !== undefined || box.style.maxWidth) {
+      delete box.dataset.compact;
+      box.style.maxWidth = '';
+    }
+    if (area() <= most) return;
+    box.dataset.compact = 'true';
+    if (area() > most) box.style.maxWidth = `${Math.floor(most / box.offsetHeight)}px`;
+  }
+
+  /**
+   * Puts the notice where none of `clear` (client boxes: the robot, the goal) is under it:
+   * the first of `PLACES` (its `top` or `bottom` offset from the map's edge, centred or
+   * `EDGE_REM` from a side: `data-place`, `data-align` in the style), else the first height in
+   * between (`data-place="middle"`, from the top down) and alignment; where every place
+   * covers one, the first place that covers fewest.
    */
   function place(clear) {
     if (box.hidden) return;
-    let best = ['top', 'center'];
     const wrap = box.offsetParent?.getBoundingClientRect();
-    if (clear.length && wrap) {
-      const now = box.getBoundingClientRect();
+    if (!wrap) return;
+    if (box.title !== text.textContent) box.title = text.textContent;
+    fit(wrap);
+    let best = ['top', 'center', null];
+    if (clear.length) {
+      const now = { width: box.offsetWidth, height: box.offsetHeight };
       const rem = parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
       const tops = { top: wrap.top + TOP_REM * rem, bottom: wrap.bottom - BOTTOM_REM * rem - now.height };
       const lefts = {
@@ -56,18 +88,25 @@ export function createNotice(box, text, close) {
         left: wrap.left + EDGE_REM * rem,
         right: wrap.right - EDGE_REM * rem - now.width,
       };
-      const under = ([v, h]) => clear.filter((c) => overlaps(
-        { left: lefts[h], right: lefts[h] + now.width, top: tops[v], bottom: tops[v] + now.height },
+      const under = (top, h) => clear.filter((c) => overlaps(
+        { left: lefts[h], right: lefts[h] + now.width, top, bottom: top + now.height },
         { left: c.left - CLEARANCE_PX, right: c.right + CLEARANCE_PX, top: c.top - CLEARANCE_PX, bottom: c.bottom + CLEARANCE_PX },
       )).length;
+      const candidates = PLACES.map(([v, h]) => [v, h, null, tops[v]]);
+      for (let y = tops.top + STEP_PX; y < tops.bottom; y += STEP_PX) {
+        for (const h of ALIGNS) candidates.push(['middle', h, y - wrap.top, y]);
+      }
       let fewest = Infinity;
-      for (const candidate of PLACES) {
-        const n = under(candidate);
-        if (n < fewest) [best, fewest] = [candidate, n];
+      for (const [v, h, offset, top] of candidates) {
+        const n = under(top, h);
+        if (n < fewest) [best, fewest] = [[v, h, offset], n];
+        if (n === 0) break;
       }
     }
     if (box.dataset.place !== best[0]) box.dataset.place = best[0];
     if (box.dataset.align !== best[1]) box.dataset.align = best[1];
+    const top = best[2] === null ? '' : `${Math.round(best[2])}px`;
+    if (box.style.top !== top) box.style.top = top;
   }
 
   return {

@@ -12,6 +12,8 @@ import { t, has } from './i18n.js';
 import { errorText } from './say.js';
 
 const INDEX_URL = 'fixtures/index.json';
+/** Session storage: the scenario last loaded in this tab, which a reload opens again. */
+const LAST_KEY = 'rtnav.scenario';
 /** MovingAI maps have no cell size: they are read at this many metres per cell. */
 const MOVINGAI_CELL_M = 1.0;
 const CUSTOM = '';
@@ -108,6 +110,7 @@ export function createScenarios(dom, app) {
     }
     current = name;
     dom.select.value = name;
+    try { sessionStorage.setItem(LAST_KEY, name); } catch { /* storage blocked: not kept */ }
     // The set-up is drawn at once, before the clock runs a tick: the first frame of a load
     // (and of a share link) is the set-up at its own time.
     app.stage.draw();
@@ -184,7 +187,8 @@ export function createScenarios(dom, app) {
     /**
      * Reads the index, fills the picker and loads: the run `carried()` restores (a run
      * carried from the other language) if it does, else the set-up of the share link
-     * `share` if given and good, else the default scenario.
+     * `share` if given and good, else the scenario last loaded in this tab (a reload), else
+     * the default scenario.
      * @param {string | null} [share]
      * @param {(() => unknown) | null} [carried]
      */
@@ -196,7 +200,10 @@ export function createScenarios(dom, app) {
       );
       if (carried && await carried()) return;
       if (share !== null && await loadShared(share)) return;
-      const first = index.default ?? index.scenarios[0]?.name;
+      let last = null;
+      try { last = sessionStorage.getItem(LAST_KEY); } catch { /* storage blocked */ }
+      const first = (shareRefusal === null && index.scenarios.some((s) => s.name === last) ? last : null)
+        ?? index.default ?? index.scenarios[0]?.name;
       if (first) await load(first);
       if (shareRefusal) {
         app.log.page(shareRefusal, 'error');

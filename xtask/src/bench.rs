@@ -8,7 +8,9 @@
 //! 2. The same operations timed by one harness natively and compiled to wasm32 under Node
 //!    (`tests/perf.rs`): the wasm rows, as a ratio to native.
 //! 3. The browser: `tests/e2e/large_map.bench.mjs` paints on the warehouse at 16× in
-//!    Debian's Chromium (the page as `cargo xtask dist` writes it) and reports the worst frame.
+//!    Debian's Chromium (the page as `cargo xtask dist` writes it) and reports the worst frame;
+//!    `tests/e2e/load.bench.mjs` loads the page cold at 10 Mbit/s with 40 ms of latency,
+//!    compressed and plain, and reports the time to the map drawn.
 //!
 //! ```text
 //! cargo xtask bench [--no-wasm] [--no-browser]
@@ -183,11 +185,22 @@ fn captured(c: &mut Command) -> Result<String> {
 type Frame = (f64, f64, f64);
 
 /// The browser test's two reports: the page as it is, and its steps without the frame budget
-/// (the baseline of the same run).
+/// (the baseline of the same run); and the first loads' (`load.bench.mjs`).
 #[derive(Default)]
 struct Frames {
     page: Option<Frame>,
     unbudgeted: Option<Frame>,
+    loads: Vec<Load>,
+}
+
+/// A first load's report: how it was served, and its times [ms] and transfer.
+struct Load {
+    way: String,
+    median_ms: f64,
+    fastest_ms: f64,
+    slowest_ms: f64,
+    requests: u64,
+    transferred_kb: u64,
 }
 
 /// Serves the page as `cargo xtask dist` writes it and runs `tests/e2e/large_map.bench.mjs`
@@ -212,8 +225,35 @@ fn browser_frame() -> Result<Frames> {
             .env("RTNAV_CHROMIUM", tools::CHROMIUM)
             .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"),
     );
+    let loads = captured(
+        cmd("node")
+            .args(["--test", "load.bench.mjs"])
+            .current_dir(&e2e)
+            .env("RTNAV_URL", &server.url)
+            .env("RTNAV_CHROMIUM", tools::CHROMIUM)
+            .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"),
+    );
     drop(server);
     let mut frames = Frames::default();
+    for line in loads?.lines() {
+        let Some(at) = line.find("RTNAV-LOAD ") else {
+            continue;
+        };
+        let Ok(v) = serde_json::from_str::<serde_json::Value>(line[at + 11..].trim()) else {
+            continue;
+        };
+        let load = (|| {
+            Some(Load {
+                way: v["way"].as_str()?.to_owned(),
+                median_ms: v["median_ms"].as_f64()?,
+                fastest_ms: v["fastest_ms"].as_f64()?,
+                slowest_ms: v["slowest_ms"].as_f64()?,
+                requests: v["requests"].as_u64()?,
+                transferred_kb: v["transferred_kb"].as_u64()?,
+            })
+        })();
+        frames.loads.extend(load);
+    }
     for line in text?.lines() {
         let Some(at) = line.find("RTNAV-FRAME ") else {
             continue;
@@ -387,6 +427,28 @@ fn table(
             if goal { "worst ≤ 50 ms" } else { "—" },
             if goal {
                 verdict(frame.map(|f| f.0 <= 50.0))
+            } else {
+                ""
+            },
+        );
+    }
+    s += "\n| first load (Chromium, cold cache, 10 Mbit/s, 40 ms) | map drawn (median) | fastest – slowest | requests | transferred | goal | |\n";
+    s += "| --- | --- | --- | --- | --- | --- | --- |\n";
+    for way in ["compressed", "plain"] {
+        let load = frames.loads.iter().find(|l| l.way == way);
+        let goal = way == "compressed";
+        s += &format!(
+            "| served {way} | {} | {} | {} | {} | {} | {} |\n",
+            ms(load.map(|l| l.median_ms)),
+            load.map_or_else(
+                || "—".to_owned(),
+                |l| format!("{:.0}–{:.0} ms", l.fastest_ms, l.slowest_ms)
+            ),
+            load.map_or_else(|| "—".to_owned(), |l| l.requests.to_string()),
+            load.map_or_else(|| "—".to_owned(), |l| format!("{} KB", l.transferred_kb)),
+            if goal { "≤ 1.5 s" } else { "—" },
+            if goal {
+                verdict(load.map(|l| l.median_ms <= 1500.0))
             } else {
                 ""
             },

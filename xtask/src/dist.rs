@@ -6,13 +6,21 @@
 //! (`fixtures/`, as `crate::fixtures` stages them: the repository's, and the external data's
 //! when it is there). Every URL the page uses is relative to the page, so the folder can be
 //! served under any sub-path; nothing needs a special header (a server that does not send
-//! `application/wasm` for `.wasm` only costs wasm-bindgen's streaming compile).
+//! `application/wasm` for `.wasm` only costs the streaming compile).
+//!
+//! `index.html` gets a module preload for every module (so they download at once, not one
+//! level of imports after another). Two things are written last, from the folder's files: the service worker's build
+//! (`sw.js`: every file with its SHA-256 and the build's version, `crate::service_worker`),
+//! and the precompressed copies beside the files (`NAME.br`, `NAME.gz`:
+//! `crate::precompress`). `cargo xtask dist --seal DIR` writes both again for a folder whose
+//! files were changed by hand.
 
 use std::path::{Path, PathBuf};
 
 use crate::Result;
 use crate::tools;
 use crate::wasm;
+use crate::{precompress, service_worker};
 
 /// The folder `cargo xtask dist` writes when not told.
 pub fn default_dir() -> PathBuf {
@@ -60,12 +68,72 @@ pub fn assemble(dir: &Path) -> Result {
         std::fs::copy(&file, pkg.join(name))?;
     }
     let n = crate::fixtures::stage_into(&tools::repo_root(), &dir.join("fixtures"))?;
+    preload_modules(dir)?;
     check_relative(dir)?;
+    seal(dir)?;
     println!(
         "xtask: {} written: the page, the wasm and {n} scenarios (serve it from any static \
          server, under any path)",
         dir.display()
     );
+    Ok(())
+}
+
+/// The page's entry script in `index.html`; the module preloads go before it.
+const ENTRY: &str = r#"<script type="module" src="./main.js"></script>"#;
+
+/// `index.html` of the folder `dir` with a `<link rel="modulepreload">` for every module the
+/// page imports (every `.js` under `js/` and `pkg/`) before its entry script: the browser
+/// fetches them all at once instead of one level of imports after another (a round trip
+/// each on a slow network). `web/index.html` has none, so there is no list to keep.
+fn preload_modules(dir: &Path) -> Result {
+    let mut modules: Vec<String> = Vec::new();
+    for sub in ["js", "pkg"] {
+        for rel in precompress::files_under(&dir.join(sub))? {
+            if rel.extension().is_some_and(|e| e == "js") {
+                let parts: Vec<String> = rel
+                    .components()
+                    .map(|c| c.as_os_str().to_string_lossy().into_owned())
+                    .collect();
+                modules.push(format!("./{sub}/{}", parts.join("/")));
+            }
+        }
+    }
+    let page = dir.join("index.html");
+    let html = std::fs::read_to_string(&page)?;
+    std::fs::write(&page, with_preloads(&html, &modules)?)?;
+    Ok(())
+}
+
+/// `html` with a module preload for each of `modules` before [`ENTRY`].
+fn with_preloads(html: &str, modules: &[String]) -> Result<String> {
+    let at = html
+        .find(ENTRY)
+        .ok_or_else(|| format!("index.html has no `{ENTRY}` to preload the modules for"))?;
+    let indent = html[..at]
+        .rsplit('\n')
+        .next()
+        .filter(|s| s.trim().is_empty())
+        .unwrap_or("");
+    let links: String = modules
+        .iter()
+        .map(|m| format!(r#"<link rel="modulepreload" href="{m}">"#) + "\n" + indent)
+        .collect();
+    Ok(format!("{}{links}{}", &html[..at], &html[at..]))
+}
+
+/// Writes the service worker's build and the precompressed copies of the folder `dir` (last:
+/// they are made from its files as they are).
+pub fn seal(dir: &Path) -> Result {
+    let sealed = service_worker::seal(dir)?;
+    println!(
+        "xtask: offline build {}: {} files, {:.0} KB, kept by the service worker",
+        sealed.version,
+        sealed.files,
+        sealed.bytes as f64 / 1000.0
+    );
+    let written = precompress::write_beside(dir)?;
+    println!("xtask: precompressed copies (.br, .gz) of {written}");
     Ok(())
 }
 
@@ -166,6 +234,22 @@ mod tests {
         );
         assert!(root_relative("await fetch('/fixtures/index.json')").is_some());
         assert!(root_relative("import { x } from '/js/dom.js';").is_some());
+    }
+
+    #[test]
+    fn every_module_is_preloaded_before_the_entry() {
+        let html = std::fs::read_to_string(tools::repo_root().join("web/index.html")).unwrap();
+        let modules = ["./js/a.js".to_owned(), "./pkg/b.js".to_owned()];
+        let out = with_preloads(&html, &modules).unwrap();
+        let a = out
+            .find(r#"<link rel="modulepreload" href="./js/a.js">"#)
+            .unwrap();
+        let b = out
+            .find(r#"<link rel="modulepreload" href="./pkg/b.js">"#)
+            .unwrap();
+        let entry = out.find(ENTRY).unwrap();
+        assert!(a < b && b < entry, "{out}");
+        assert!(with_preloads("<html></html>", &modules).is_err());
     }
 
     #[test]

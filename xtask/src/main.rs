@@ -10,6 +10,8 @@
 //! cargo xtask build-wasm [--dev]  build the wasm into web/pkg, stage the fixtures in web/fixtures
 //! cargo xtask serve [--port N]    stage the fixtures and serve web/
 //! cargo xtask dist [DIR]          the page as a static folder (default dist/)
+//! cargo xtask dist --seal DIR     its offline build and precompressed copies, written again
+//! cargo xtask dist --no-build DIR the folder from the wasm already built in web/pkg
 //! cargo xtask test [--stage WORD]  every check CI runs (or those named), with a summary
 //! cargo xtask e2e [FILE...]       the page's build and the browser tests alone
 //! cargo xtask types               write web/types from the Rust views, type-check the page
@@ -22,15 +24,17 @@ mod bench;
 mod dist;
 mod fixtures;
 mod fuzz;
+mod precompress;
 mod prefetch;
 mod serve;
+mod service_worker;
 mod soak;
 mod test;
 mod tools;
 mod types;
 mod wasm;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Errors are reported to the user as text; nothing here recovers from them.
@@ -48,7 +52,12 @@ commands:
                        the scenario fixtures and their maps into web/fixtures
   serve [--port N]     copy the fixtures and serve web/ without building
   dist [DIR]           build the wasm and write the page, the wasm and the scenarios
-                       as a static folder for any static host (default dist/)
+                       as a static folder for any static host (default dist/), with
+                       precompressed copies (.br, .gz) and the service worker's build
+  dist --seal DIR      write the service worker's build and the precompressed copies of
+                       a dist folder again, after its files were changed by hand
+  dist --no-build DIR  write the folder from the wasm already in web/pkg (built by
+                       `build-wasm`, release or --dev), without building it
   types                write web/types/core.d.ts from the core's view types and
                        type-check the page's JavaScript against it (tsc, strict)
   bench [--no-wasm] [--no-browser]
@@ -128,14 +137,17 @@ fn dispatch(args: &[String]) -> Result<ExitCode> {
         prefetch::COMMAND => {
             prefetch::run_steps()?;
         }
-        "dist" => {
-            let dir = match rest {
-                [] => dist::default_dir(),
-                [dir] if !dir.starts_with('-') => PathBuf::from(dir),
-                _ => return Err(format!("dist: unexpected arguments {rest:?}").into()),
-            };
-            dist::build(&dir)?;
-        }
+        "dist" => match rest {
+            [] => {
+                dist::build(&dist::default_dir())?;
+            }
+            [dir] if !dir.starts_with('-') => {
+                dist::build(Path::new(dir))?;
+            }
+            [flag, dir] if flag == "--seal" => dist::seal(Path::new(dir))?,
+            [flag, dir] if flag == "--no-build" => dist::assemble(Path::new(dir))?,
+            _ => return Err(format!("dist: unexpected arguments {rest:?}").into()),
+        },
         "test" => {
             let mut only = Vec::new();
             let mut it = rest.iter();

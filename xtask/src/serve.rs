@@ -5,7 +5,11 @@
 //! It serves files only and nothing a static host does not: `GET`, a folder's `index.html`
 //! (and `/rtnav` → `/rtnav/`, as static hosts redirect), no directory listings, nothing
 //! outside its folder, no caching (a rebuilt wasm is picked up by a reload), and `.wasm` as
-//! `application/wasm` so browsers can compile it while it streams.
+//! `application/wasm` so browsers can compile it while it streams. Where `cargo xtask dist`
+//! wrote precompressed copies beside a file (`NAME.br`, `NAME.gz`: `crate::precompress`), a
+//! browser that accepts their coding gets one, with `Content-Encoding`, the original's
+//! `Content-Type`, and `Vary: Accept-Encoding` (as nginx's `gzip_static` does); `web/` has no
+//! copies, so `cargo xtask serve` and `demo` send the files as they are.
 //!
 //! Why oxhttp, not tiny_http: tiny_http 0.12 hands each connection to a thread pool that can
 //! queue a connection behind busy keep-alive connections when a browser opens several at once;
@@ -18,10 +22,13 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use oxhttp::Server;
-use oxhttp::model::header::{CACHE_CONTROL, CONTENT_TYPE, LOCATION};
+use oxhttp::model::header::{
+    ACCEPT_ENCODING, CACHE_CONTROL, CONTENT_ENCODING, CONTENT_TYPE, LOCATION, VARY,
+};
 use oxhttp::model::{Body, Method, Request, Response, StatusCode};
 
 use crate::Result;
+use crate::precompress::{self, Encoding};
 use crate::tools;
 
 /// The directory served.
@@ -131,6 +138,8 @@ fn content_type(path: &Path) -> &'static str {
         "ico" => "image/x-icon",
         "txt" | "md" | "conf" | "ts" | "yaml" | "yml" => "text/plain; charset=utf-8",
         "pgm" => "image/x-portable-graymap",
+        "gz" => "application/gzip",
+        "br" => "application/x-brotli",
         _ => "application/octet-stream",
     }
 }
@@ -161,12 +170,30 @@ fn respond(root: &Path, request: &mut Request<Body>) -> Response<Body> {
         eprintln!("serve: 404 GET {path}");
         return status(StatusCode::NOT_FOUND, "not found");
     };
-    match std::fs::read(&file) {
-        Ok(bytes) => Response::builder()
-            .header(CONTENT_TYPE, content_type(&file))
-            .header(CACHE_CONTROL, "no-store")
-            .body(Body::from(bytes))
-            .unwrap_or_else(|_| status(StatusCode::INTERNAL_SERVER_ERROR, "bad header")),
+    let accept = request
+        .headers()
+        .get(ACCEPT_ENCODING)
+        .and_then(|v| v.to_str().ok());
+    let compressible = precompress::compressible(&file);
+    let encoding = compressible
+        .then(|| Encoding::negotiate(accept, |e| e.copy_of(&file).is_file()))
+        .flatten();
+    let sent = encoding.map_or_else(|| file.clone(), |e| e.copy_of(&file));
+    match std::fs::read(&sent) {
+        Ok(bytes) => {
+            let mut response = Response::builder()
+                .header(CONTENT_TYPE, content_type(&file))
+                .header(CACHE_CONTROL, "no-store");
+            if compressible {
+                response = response.header(VARY, "Accept-Encoding");
+            }
+            if let Some(e) = encoding {
+                response = response.header(CONTENT_ENCODING, e.token());
+            }
+            response
+                .body(Body::from(bytes))
+                .unwrap_or_else(|_| status(StatusCode::INTERNAL_SERVER_ERROR, "bad header"))
+        }
         Err(e) => {
             eprintln!("serve: 500 GET {path}: {e}");
             status(StatusCode::INTERNAL_SERVER_ERROR, "cannot read the file")
@@ -193,6 +220,75 @@ mod tests {
         for (url, expect) in cases {
             assert_eq!(resolve(&root, url), expect.map(|f| root.join(f)), "{url}");
         }
+    }
+
+    /// `GET path` with `Accept-Encoding: accept` (none if None) from `root`: the status, the
+    /// `Content-Type`, `Content-Encoding` and `Vary` headers, and the body.
+    fn get(root: &Path, path: &str, accept: Option<&str>) -> (u16, [Option<String>; 3], Vec<u8>) {
+        let mut request = Request::builder().uri(path);
+        if let Some(a) = accept {
+            request = request.header(ACCEPT_ENCODING, a);
+        }
+        let mut request = request.body(Body::empty()).unwrap();
+        let response = respond(root, &mut request);
+        let header = |name| {
+            response
+                .headers()
+                .get(name)
+                .map(|v: &oxhttp::model::HeaderValue| v.to_str().unwrap().to_owned())
+        };
+        let headers = [header(CONTENT_TYPE), header(CONTENT_ENCODING), header(VARY)];
+        (
+            response.status().as_u16(),
+            headers,
+            response.into_body().to_vec().unwrap(),
+        )
+    }
+
+    #[test]
+    fn precompressed_copies_are_sent_to_browsers_that_accept_them() {
+        let root = std::env::temp_dir().join(format!("rtnav-serve-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        std::fs::create_dir_all(root.join("pkg")).unwrap();
+        let module: Vec<u8> = (0..50_000u32)
+            .flat_map(|i| (i % 251).to_le_bytes())
+            .collect();
+        std::fs::write(root.join("pkg/m.wasm"), &module).unwrap();
+        std::fs::write(root.join("map.png"), vec![1u8; 2000]).unwrap();
+        precompress::write_beside(&root).unwrap();
+        let (gz, br) = (
+            std::fs::read(root.join("pkg/m.wasm.gz")).unwrap(),
+            std::fs::read(root.join("pkg/m.wasm.br")).unwrap(),
+        );
+        let wasm = Some("application/wasm".to_owned());
+        let vary = Some("Accept-Encoding".to_owned());
+        let cases = [
+            (Some("gzip, deflate, br, zstd"), Some("br"), &br),
+            (Some("gzip, deflate"), Some("gzip"), &gz),
+            (Some("br;q=0, gzip"), Some("gzip"), &gz),
+            (Some("identity"), None, &module),
+            (None, None, &module),
+        ];
+        for (accept, coding, body) in cases {
+            let (code, headers, got) = get(&root, "/pkg/m.wasm", accept);
+            assert_eq!(code, 200, "{accept:?}");
+            assert_eq!(
+                headers,
+                [wasm.clone(), coding.map(str::to_owned), vary.clone()],
+                "{accept:?}"
+            );
+            assert!(got == *body, "{accept:?}: the wrong body");
+        }
+        // Not compressible: no copies, no Vary.
+        let (code, headers, _) = get(&root, "/map.png", Some("br, gzip"));
+        assert_eq!(code, 200);
+        assert_eq!(headers, [Some("image/png".to_owned()), None, None]);
+        // A copy asked for by its own name is a plain file.
+        let (_, headers, got) = get(&root, "/pkg/m.wasm.gz", Some("br, gzip"));
+        assert_eq!(headers[0].as_deref(), Some("application/gzip"));
+        assert_eq!(headers[1], None);
+        assert!(got == gz);
+        std::fs::remove_dir_all(&root).unwrap();
     }
 
     #[test]

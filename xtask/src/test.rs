@@ -59,7 +59,7 @@ const STAGES: &[Stage] = &[
         needs_downloads: true,
     },
     Stage {
-        name: "the page: wasm build, dist folder",
+        name: "the page: wasm build, size budget, dist folder",
         run: page,
         needs_downloads: true,
     },
@@ -204,11 +204,17 @@ fn e2e_site() -> PathBuf {
 const E2E_SUB_PATH: &str = "rtnav";
 
 /// The page's wasm (release: the `web` profile and wasm-opt), and the dist folder made from
-/// it, which the e2e stage serves. The note is the module's size.
+/// it, which the e2e stage serves. The note is the module's size; the stage fails (after
+/// writing the folder, so the browser tests still run) if the module is over its gzipped
+/// budget (`wasm::GZIP_BUDGET`).
 fn page() -> Result<Option<String>> {
     let built = wasm::build_pkg(wasm::Profile::Release)?;
     dist::assemble(&e2e_site().join(E2E_SUB_PATH))?;
-    Ok(Some(built.to_string()))
+    wasm::check_budget(built.module)?;
+    Ok(Some(format!(
+        "{built}; budget {:.0} KB gzipped",
+        wasm::GZIP_BUDGET as f64 / 1000.0
+    )))
 }
 
 pub(crate) fn e2e_dir() -> PathBuf {
@@ -217,7 +223,9 @@ pub(crate) fn e2e_dir() -> PathBuf {
 
 /// Chromium (Debian's, driven by `playwright-core`) against the dist folder of the page stage,
 /// served by a plain static server under `/rtnav/`; the native runner built by the test
-/// stage answers the tests that compare the page with the core.
+/// stage answers the tests that compare the page with the core. The tests of a new build
+/// (`offline.test.mjs`) copy the folder (`RTNAV_SITE`) and serve and seal the copy with this
+/// program (`RTNAV_XTASK`).
 fn e2e() -> Result<Option<String>> {
     e2e_files(&[])
 }
@@ -287,6 +295,8 @@ fn e2e_files(only: &[String]) -> Result<Option<String>> {
         .current_dir(e2e_dir())
         .env("RTNAV_URL", &url)
         .env("RTNAV_CLI", &cli)
+        .env("RTNAV_SITE", site.join(E2E_SUB_PATH))
+        .env("RTNAV_XTASK", std::env::current_exe()?)
         .env("RTNAV_CHROMIUM", tools::CHROMIUM)
         .env("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1"));
     drop(server);
