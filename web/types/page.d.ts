@@ -55,4 +55,6 @@ interface App {
 interface Window {
   /** The page's test hook (main.js): the handle, the app and the panels. */
   rtnav: Record<string, unknown>;
+  /** The wasm module index.html began to download and compile as the page opened. */
+  rtnavWasm?: Promise<WebAssembly.Module | null> | null;
 }

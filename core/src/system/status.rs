@@ -377,7 +377,10 @@ impl fmt::Display for Status {
                 reason: None,
                 motion,
             } => {
-                write!(f, "{component} in Error (Reset recovers); the robot {motion}")
+                write!(
+                    f,
+                    "{component} in Error (Reset recovers); the robot {motion}"
+                )
             }
             Self::Halted { by, motion } => {
                 write!(f, "halted by {by} until the next goal; the robot {motion}")

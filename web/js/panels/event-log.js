@@ -59,6 +59,9 @@ export function createEventLog(root, app) {
   /**
    * What makes two occurrences the same condition: the kind and the words (a safety stop's
    * distance ahead changes from one stop to the next; whether it replans does not).
+   * @param {{kind: string, data?: EventView['data']}} e
+   * @param {string} text
+   * @returns {string | null}
    */
   const condition = (e, text) => {
     if (!REPEATING.has(e.kind)) return null;
@@ -67,22 +70,33 @@ export function createEventLog(root, app) {
     return `${e.kind} ${text}`;
   };
 
-  /** The entry `e` repeats (its condition, said last within the window), if any. */
+  /**
+   * The entry `e` repeats (its condition, said last within the window), if any.
+   * @param {string | null} key
+   * @param {{time_s: number}} e
+   * @returns {HTMLElement | null}
+   */
   function repeated(key, e) {
     if (!key) return null;
     for (const item of list.children) {
+      if (!(item instanceof HTMLElement)) continue;
       if (e.time_s - Number(item.dataset.last) > REPEAT_WINDOW_S) continue;
-      if (item.rtnavCondition === key) return item;
+      if (/** @type {{rtnavCondition?: string}} */ (/** @type {unknown} */ (item)).rtnavCondition === key) return item;
     }
     return null;
   }
 
-  /** Counts one more occurrence of `item`'s condition, at `time_s`. */
+  /**
+   * Counts one more occurrence of `item`'s condition, at `time_s`.
+   * @param {HTMLElement} item
+   * @param {number} time_s
+   */
   function repeat(item, time_s) {
     const count = Number(item.dataset.count) + 1;
     item.dataset.count = String(count);
     item.dataset.last = String(time_s);
-    item.querySelector('.repeats').textContent = t('log.repeats', { count, last: seconds(time_s) });
+    const repeats = item.querySelector('.repeats');
+    if (repeats) repeats.textContent = t('log.repeats', { count, last: seconds(time_s) });
   }
 
   /**
