@@ -186,8 +186,10 @@ fn inject_fault_error_with_reason_reset_and_activate_again() {
     assert_eq!(dc.info.state, LifecycleState::Error);
     assert_eq!(dc.colour, "#ff0000");
     assert_eq!(
-        dc.info.last_error.as_deref(),
-        Some("injected fault: requested from the page")
+        dc.info.last_error,
+        Some(rtnav::Reason::InjectedFault(
+            "requested from the page".to_owned()
+        ))
     );
     assert_eq!(session.state().to_string(), "Error");
     let events = session.event_views();
@@ -239,8 +241,11 @@ fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
     run(&mut session, 0.5, |_| false);
     let physics = &session.components()[2];
     assert_eq!(physics.info.state, LifecycleState::Error);
-    let reason = physics.info.last_error.clone().unwrap();
-    assert!(reason.starts_with("bump: "), "{reason}");
+    assert!(
+        matches!(physics.info.last_error, Some(rtnav::Reason::Bump(_))),
+        "{:?}",
+        physics.info.last_error
+    );
     assert!(kinds(&session.event_views()).contains(&"Bump"));
     let goal = session.plan().goal;
     let where_ = session.telemetry().pose;
@@ -404,7 +409,9 @@ fn the_status_comes_with_its_fields_for_the_page_to_say() {
         serde_json::Value::Object(t.status_fields),
         serde_json::json!({
             "component": "DriveControl0",
-            "reason": "injected fault: requested from the page",
+            "reason": {"kind": "injected_fault", "words": "requested from the page"},
+            // The fault came 0.1 s into the drive: the robot had not moved yet.
+            "motion": "stands",
         }),
         "{}",
         t.status
@@ -425,7 +432,7 @@ fn the_clock_turns_wall_time_times_speed_into_whole_ticks() {
     assert_eq!(session.advance(16.0), 256);
     session.set_paused(true);
     assert_eq!(session.advance(16.0), 0);
-    session.step_ticks(1);
+    session.step_ticks(1).unwrap();
     assert_eq!(
         session.clock().time_s,
         (16 + 1 + 1 + 100 + 8 + 256 + 1) as f64 * 1e-3
