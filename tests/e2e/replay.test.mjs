@@ -113,6 +113,21 @@ test('a downloaded replay, loaded after a reload, gives the same trace and frame
   await page.waitForSelector('#timeline-message[data-level="error"]', WAIT);
   assert.match(await page.innerText('#timeline-message'), /version 99/);
   assert.equal(await traceHash(page), hash);
+  // A hand-in of a scenario changed since it was recorded, or of another behaviour version of
+  // the core, is refused with which, and the page keeps its run.
+  for (const [edit, words] of [
+    [{ scenario_hash: '0'.repeat(64) }, 'has changed since the replay was recorded'],
+    [{ behaviour: replay.behaviour - 1 }, `recorded by behaviour version ${replay.behaviour - 1}`],
+  ]) {
+    await page.setInputFiles('#replay-file', {
+      name: 'changed.rtnav.json', mimeType: 'application/json',
+      buffer: Buffer.from(JSON.stringify({ ...replay, ...edit })),
+    });
+    await page.waitForFunction(
+      (words) => document.querySelector('#timeline-message[data-level="error"]')?.textContent?.includes(words),
+      words, WAIT);
+    assert.equal(await traceHash(page), hash);
+  }
   assert.deepEqual(problems, []);
   await page.close();
 });

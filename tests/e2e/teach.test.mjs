@@ -416,7 +416,7 @@ test('Sensor glitch → Localization in Error naming the port → Reset → Inac
   await expectState(page, 'Localization', 'Error');
   const reason = await page.textContent(`${loc} .rtc-reason`);
   assert.match(reason, /^Reason: .*InSimulatedPosition/);
-  const components = await json(page, 'components_json');
+  const components = await page.evaluate(() => window.rtnav.demo.components());
   assert.match(JSON.stringify(components.find((c) => c.name === 'Localization').last_error), /InSimulatedPosition/);
   await screenshot(page, 'teach-glitch.png', { docs: false });
   await page.click(`${loc} .act`);

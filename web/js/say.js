@@ -55,7 +55,6 @@ export function sayer(t, has) {
     if ('index' in fields) vars.at_index = fields.index === null ? '' : t('error.at_index', { index: fields.index });
     if (typeof fields.index === 'number') vars.previous = fields.index - 1;
     if ('non_negative' in fields) vars.non_negative = fields.non_negative ? t('error.System.non_negative') : '';
-    if (d.area === 'Page') vars.expected = t('error.Page.expected');
     return vars;
   }
 

@@ -150,7 +150,11 @@ export function createTimeline(root, app) {
     } catch (e) {
       return say(t('timeline.replay_refused', { error: errorText(e) }), 'error');
     }
-    if (!(await app.scenarios.load(name))) return say(t('timeline.scenario_failed', { name: scenarioTitle(name) }), 'error');
+    // The replay's scenario, loaded unless it is the one loaded now (then a replay the core
+    // refuses — a scenario changed since, another behaviour version — leaves the run as it is).
+    if (app.scenarios.current !== name && !(await app.scenarios.load(name))) {
+      return say(t('timeline.scenario_failed', { name: scenarioTitle(name) }), 'error');
+    }
     demo.set_paused(true);
     const r = app.attempt(() => demo.load_replay(text));
     jumped();
