@@ -9,7 +9,7 @@
 //! and integrates exact arcs ([`crate::motion::Odometry`]) with its own wheel geometry
 //! (which may differ from the simulated robot's: drift).
 //!
-//! **Decision (faults, issue 7)**: a non-finite number on either input is a fault — the pose
+//! **Decision (faults)**: a non-finite number on either input is a fault — the pose
 //! can no longer be trusted, and publishing it would send NaN on to the planners and
 //! DriveControl — so `on_execute` fails with the port and field named, and the component goes
 //! to Error (spec §1); the held pose stays and Reset recovers. A wrong length, a timestamp
