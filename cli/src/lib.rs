@@ -1,5 +1,5 @@
-//! The `rtnav` runner's library: the reliability tools behind `rtnav fuzz` and `rtnav soak`
-//! (issue 18), kept apart from the binary so that tests can drive them.
+//! The `rtnav` runner's library: the reliability tools behind `rtnav fuzz` and `rtnav soak`,
+//! kept apart from the binary so that tests can drive them.
 //!
 //! - [`alloc`]: a counting allocator (a binary installs it) for allocation bounds and memory;
 //! - [`rng`]: the tools' seeded random numbers (the core reads none);

@@ -23,7 +23,7 @@
 //! `dot` or as JSON; with `--until` after running the scenario that long, so the JSON holds
 //! each port's newest sample and each service port's last call.
 //!
-//! `fuzz` and `soak` are the reliability tools of issue 18 (`rtnav_cli::fuzz`,
+//! `fuzz` and `soak` are the reliability tools (`rtnav_cli::fuzz`,
 //! `rtnav_cli::soak`); `cargo xtask fuzz` and `cargo xtask soak` run them in release mode.
 //!
 //! `inspect` prints what the map and the potential field say about one cell, as one line of

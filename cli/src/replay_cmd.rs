@@ -1,4 +1,4 @@
-//! `rtnav replay FILE` and `rtnav compare SCENARIO --a CONF --b CONF` (issue 16).
+//! `rtnav replay FILE` and `rtnav compare SCENARIO --a CONF --b CONF`.
 //!
 //! A replay names its scenario; the scenario file is `fixtures/scenarios/NAME.json` under
 //! `--root`, else under the first folder above the replay file (then above the working

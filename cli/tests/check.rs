@@ -1,4 +1,4 @@
-//! `rtnav check SCENARIO --conf FILE` (issue 17): every exercise's reference solution
+//! `rtnav check SCENARIO --conf FILE`: every exercise's reference solution
 //! (`fixtures/exercises/NAME.solution.conf`) exits 0, a wrong one (`NAME.wrong.conf`)
 //! exits 1 and says FAILED; a scenario without an exercise is an error (exit 2). Seed 003's
 //! exercise is done with Reset and Activate, not with a configuration: handed in without

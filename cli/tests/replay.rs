@@ -1,4 +1,4 @@
-//! `rtnav replay` and `rtnav compare` (issue 16): a replay recorded by a session reproduces
+//! `rtnav replay` and `rtnav compare`: a replay recorded by a session reproduces
 //! its trace hash from the command line (PNG and CSV written); a tampered hash exits 1, a
 //! file of another version exits 2 with the reason, and so does a kept hand-in of a scenario
 //! that has changed since; PostureConsiderationLevel 0 vs 85 on

@@ -1,4 +1,4 @@
-//! Replays and seeking (issue 16): a recorded run of open_field with a map stroke and a
+//! Replays and seeking: a recorded run of open_field with a map stroke and a
 //! parameter change is a small file that reproduces the trace hash; a file of another
 //! version or a malformed one is refused; seeking back and forth reaches the state a straight
 //! run had at that time, trace hash and all.

@@ -1,4 +1,4 @@
-//! The system's description (issue 19, [`SystemGraph`]) is the wiring's: every port it names
+//! The system's description ([`SystemGraph`]) is the wiring's: every port it names
 //! is a port of that component with that type, every connection it describes carries data
 //! in a run, every port of seeds 000 and 002 that rtnav implements is in it, and a cut of
 //! `TargetVelocity` is a logged request that makes MotorControl stop safely until restored.

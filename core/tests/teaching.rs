@@ -1,4 +1,4 @@
-//! The core of the teaching tools (issue 8): PhysicsSim's configuration (spec §5 "Physics"),
+//! The core of the teaching tools: PhysicsSim's configuration (spec §5 "Physics"),
 //! the whole configuration as one OpenRTM `.conf` bundle (spec §1), and the cell inspector
 //! (spec §2 obstacle distance, spec §3 step 4 potential field).
 

@@ -1,4 +1,4 @@
-// End-to-end (issue 17): an exercise done in the page — its checklist live, its verdict at
+// End-to-end: an exercise done in the page — its checklist live, its verdict at
 // the end, the same as `rtnav check` gives for the same configuration — and the page in
 // Japanese: chosen from the browser's language, kept in local storage, carried by share
 // links; at 1280×800, 768×1024 and 390×844 no English left (apart from names: RT-components, ports,

@@ -1,4 +1,4 @@
-// The page's two catalogues (issue 17): `web/i18n/en.json` and `web/i18n/ja.json` have the
+// The page's two catalogues: `web/i18n/en.json` and `web/i18n/ja.json` have the
 // same keys, with the same placeholders; every key the page asks for exists; the Japanese
 // catalogue translates every scenario's description, lesson and exercise task and every
 // parameter the seeds give no Japanese words for. No browser: the files are read.

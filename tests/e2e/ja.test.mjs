@@ -1,4 +1,4 @@
-// End-to-end (issue 17): the page in Japanese with everything it says — not only its labels
+// End-to-end: the page in Japanese with everything it says — not only its labels
 // but the event log's lines of every kind that happens, the refusals (a goal inside an
 // obstacle, an illegal lifecycle request, a bad parameter value), the parameter warnings,
 // the System tab, the inspector, the plots, the timeline, the compare view and the exercise

@@ -1,4 +1,4 @@
-// End-to-end: the page as a teacher meets it (issue 15), one test per point of the issue,
+// End-to-end: the page as a teacher meets it, one test per point,
 // through the page's own buttons, mouse, fingers and canvas.
 //
 // Proves: (1) the status, the counters and the log come from the system's facts, numbers

@@ -1,4 +1,4 @@
-// End-to-end (issue 16): a run of open_field with a map stroke and a parameter change is
+// End-to-end: a run of open_field with a map stroke and a parameter change is
 // downloaded as a replay (< 20 KB), the page is reloaded, the replay loaded: the same trace
 // hash and the same frame, byte for byte. The timeline seeks back and forth and steps one
 // tick, back to the same hash; "compare with…" on parking_wall shows different arrival

@@ -1,4 +1,4 @@
-// End-to-end: the System tab (issue 19) — the RT-components, their ports and connections, as
+// End-to-end: the System tab — the RT-components, their ports and connections, as
 // RT System Editor shows them, live, from the core's own description.
 //
 // Proves: the view lists every component and every port of seeds 000 and 002 that rtnav

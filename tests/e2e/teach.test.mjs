@@ -1,4 +1,4 @@
-// End-to-end: the teaching tools (issue 8) and the sensor glitch (issue 7), through the
+// End-to-end: the teaching tools and the sensor glitch, through the
 // page's own panels, mouse and canvas.
 //
 // Proves: a planning parameter changed while the robot stands re-plans and redraws the path
@@ -285,7 +285,7 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   const list = await params(page);
   const planned = await plan(page);
   const token = new URL(link).searchParams.get('share');
-  assert.equal(link, `${new URL(page.url()).origin}${new URL(page.url()).pathname}?lang=en&share=${token}`, "the link carries the language (issue 17)");
+  assert.equal(link, `${new URL(page.url()).origin}${new URL(page.url()).pathname}?lang=en&share=${token}`, "the link carries the language");
   assert.match(token, /^[A-Za-z0-9_-]+$/, 'URL-safe');
 
   // The fresh page keeps a copy of the first frame it puts on the canvas.

@@ -1,4 +1,4 @@
-// The compare view (issue 16): "compare with…" from the Parameters tab runs the scenario
+// The compare view: "compare with…" from the Parameters tab runs the scenario
 // loaded twice to its outcome — A with the set-up as it is now (start, goal, map edits,
 // changed parameters), B with one parameter changed — and shows both robots on one canvas
 // (B as a violet ghost, its trail too), their speeds overlaid, and the summary table: time

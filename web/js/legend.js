@@ -1,4 +1,4 @@
-// The legend over the map's corner (issue 15): what the colours and lines mean, the heat
+// The legend over the map's corner: what the colours and lines mean, the heat
 // map's colour scale (the potential's range, log scale, from the renderer) and a scale bar.
 // It folds away (a <details>, folded at first) and is kept small: never more than about 15 %
 // of the map (on a narrow screen it sits under the map). The colours are the renderer's (`render::style`).

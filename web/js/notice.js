@@ -2,7 +2,7 @@
 // scenario, or a state of the system (a component in Error, a bump, a planning failure,
 // arrival).
 //
-// A notice about a state is tied to it (issue 15): `show(text, level, { until })` hides it as
+// A notice about a state is tied to it: `show(text, level, { until })` hides it as
 // soon as `until()` says the state has ended (checked every frame), and `endState()` — called
 // by Reset and Activate, and by loading a scenario — ends it at once. Other notices fade after
 // a few seconds; a refusal stays longer, so it can be read. The notice keeps off the robot and

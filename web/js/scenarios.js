@@ -3,7 +3,7 @@
 // which loader a file needs, and whether it is good, is decided there. A bad file is
 // refused with the reason and the current map stays.
 //
-// A share link (`?share=TOKEN`, issue 8) names a scenario (`Demo.share_scenario`): that
+// A share link (`?share=TOKEN`) names a scenario (`Demo.share_scenario`): that
 // scenario is loaded the usual way, then the token's start, goal, map edits and parameters
 // are applied (`apply_share`). A bad link is explained and the default scenario shown.
 import { Demo, Files } from '../pkg/rtnav_wasm.js';

@@ -7,10 +7,10 @@
 // the arrow of a start or goal being dragged, the brush and the cells a stroke will change,
 // a start waiting for its goal.
 //
-// The view (issue 15): the wheel, a pinch or the zoom buttons zoom about a point (the
+// The view: the wheel, a pinch or the zoom buttons zoom about a point (the
 // renderer's `Camera`: the world point under it stays put); the Pan tool, the middle or
 // right mouse button, or two fingers drag the picture; Fit shows the whole map again.
-// A paint stroke is one MapUpdate, sent when the stroke ends (issue 15): the cells under the
+// A paint stroke is one MapUpdate, sent when the stroke ends: the cells under the
 // brush are gathered while it moves and previewed on the overlay.
 import { t, fixed } from './i18n.js';
 

@@ -1,4 +1,4 @@
-//! `cargo xtask bench`: issue 14's table — interactive planning on the largest real maps —
+//! `cargo xtask bench`: the table — interactive planning on the largest real maps —
 //! measured in one run and printed as Markdown (the table of `docs/performance.md`).
 //!
 //! 1. The criterion benches `interactive` (edit, local plan, full field, route on the

@@ -1,6 +1,6 @@
 //! The project's own fuzzer, on stable Rust: one target per reader and per kind of hostile
 //! call, inputs made by mutating fixture inputs and by generating them at random, every input
-//! checked for the four properties of issue 18:
+//! checked for four properties:
 //!
 //! 1. **no panic** — each input runs under `std::panic::catch_unwind`;
 //! 2. **bounded allocation** — with the counting allocator installed ([`crate::alloc`]), the
@@ -44,7 +44,7 @@ use std::time::{Duration, Instant};
 use crate::alloc;
 use crate::rng::{Rng, name_hash};
 
-/// The slowest an input may be: 1 s (issue 18), measured in a release build; a debug build
+/// The slowest an input may be: 1 s, measured in a release build; a debug build
 /// (the short run of `cargo test`) is allowed ten times that, as its code is about ten times
 /// slower.
 pub const SLOW: Duration = if cfg!(debug_assertions) {

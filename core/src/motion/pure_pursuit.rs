@@ -530,8 +530,8 @@ impl PurePursuit {
         let w_des = w_des.clamp(-params.max_angular_velocity, params.max_angular_velocity);
         let w = ramp(self.last.1, w_des, dw);
         // A path of huge finite coordinates can still make the geometry overflow (∞ − ∞):
-        // such a command is refused and never kept, so the rate limits stay finite (issue 18:
-        // a NaN kept here made the next tick's `clamp` panic).
+        // such a command is refused and never kept, so the rate limits stay finite
+        // (a NaN kept here made the next tick's `clamp` panic).
         if let Some((field, value)) = [("v", v_eff), ("w", w)]
             .into_iter()
             .find(|(_, x)| !x.is_finite())

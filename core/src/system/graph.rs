@@ -1,6 +1,6 @@
 //! [`SystemGraph`]: the system's own description of itself — its components, their data
 //! and service ports, and the connections between them — read from the wiring as it was
-//! connected and as it runs (RT System Editor's picture of a system; issue 19). The page
+//! connected and as it runs (RT System Editor's picture of a system). The page
 //! lays its System view out from it, `rtnav system --dot|--json` prints it.
 //!
 //! Nothing here is drawn by hand: the data ports are what each component lists

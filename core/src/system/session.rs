@@ -439,7 +439,7 @@ impl Session {
             .decode(token.trim())
             .map_err(|e| bad_token(format!("not base64url: {e}")))?;
         // The error names the inflate status only: its partial output (up to the limit)
-        // would make a message of megabytes (issue 18, a deflate bomb).
+        // would make a message of megabytes (a deflate bomb).
         let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, TOKEN_INFLATE_LIMIT)
             .map_err(|e| {
                 bad_token(match e.status {

@@ -1,5 +1,5 @@
 // @ts-check
-// The exercise of a scenario (issue 17): its task, the parameters it lets change, the
+// The exercise of a scenario: its task, the parameters it lets change, the
 // checks as a live checklist and the verdict at the end. Every check is evaluated by the
 // core (`Session::exercise`, in each frame's read; `rtnav::system::ExerciseWatch`) from the facts and samples
 // of the run, so `rtnav check` gives the same verdict; this panel only shows them.

@@ -1,4 +1,4 @@
-// The hover inspector (issue 8): what the core knows about the map cell under the mouse
+// The hover inspector: what the core knows about the map cell under the mouse
 // (`Demo.inspect`): its indices and its centre in metres, its occupancy, the distance to the
 // nearest obstacle and whether that is within dmin, and LocalPathPlanning's potential there
 // explained as G = G(parent) + R + A + P (000 §5.2.4.9: the parent's potential, repulsion

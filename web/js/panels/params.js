@@ -1,4 +1,4 @@
-// The parameter panel (issue 8): every configuration parameter of LocalPathPlanning,
+// The parameter panel: every configuration parameter of LocalPathPlanning,
 // MotorControl, DriveControl and PhysicsSim (`Demo.params()`), grouped by component, with its
 // unit, range and reflection timing (OpenRTM's 常時 "always" or 初期化時 "on activation").
 //

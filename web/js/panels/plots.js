@@ -1,4 +1,4 @@
-// The plots (issue 8): the last 10 s of telemetry (`Demo.plot(10)`) on four small canvases
+// The plots: the last 10 s of telemetry (`Demo.plot(10)`) on four small canvases
 // drawn here with the 2D context (no chart library):
 //   (a) MotorControl's target wheel rates against the physics' actual ones, left and right;
 //   (b) the wheel torques MotorControl commands, those the physics applies (saturated) and

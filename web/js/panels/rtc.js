@@ -2,7 +2,7 @@
 // The RTC panel: every component of the system (spec §0) with its lifecycle state in the RT
 // System Editor's colours, the reason when it is in Error, and the requests of spec §1 for
 // each one (those for all at once are in the system bar) — plus "Inject fault", and for Localization
-// a "Sensor glitch" (issue 7): one NaN pose written into its InSimulatedPosition port, as
+// a "Sensor glitch": one NaN pose written into its InSimulatedPosition port, as
 // OpenRTM rtshell's `rtinject` writes into a port (`inject_input`).
 import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';

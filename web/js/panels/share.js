@@ -1,5 +1,5 @@
 // @ts-check
-// Share and export (issue 8): a link that reproduces this set-up (the scenario, where the
+// Share and export: a link that reproduces this set-up (the scenario, where the
 // robot starts and goes, the map edits since the scenario was loaded and every parameter
 // changed; `share_token`), the telemetry as CSV (`telemetry_csv`) and the frame on the
 // canvas as PNG.

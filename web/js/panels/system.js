@@ -1,4 +1,4 @@
-// The System tab (issue 19): the system as RT System Editor draws it — every RT-component a
+// The System tab: the system as RT System Editor draws it — every RT-component a
 // box in its state's colour, its data ports and service ports as markers on the box, the
 // connections as lines — laid out from the core's own description (`demo.system_graph()`,
 // rtnav::system::SystemGraph), never drawn by hand: a component, port or connection the core

@@ -1,5 +1,5 @@
 // @ts-check
-// The system bar (issue 15), seen from every tab: the whole system's lifecycle state in the
+// The system bar, seen from every tab: the whole system's lifecycle state in the
 // RT System Editor's colours, and the requests on all components at once — Activate all,
 // Deactivate all, Reset all — which start and stop the robot. What the robot is doing is
 // the core's `Status` (the telemetry's status), never guessed here.

@@ -1,5 +1,5 @@
 // @ts-check
-// The timeline under the canvas (issue 16): play and pause, a slider to seek to any time of
+// The timeline under the canvas: play and pause, a slider to seek to any time of
 // the run, one tick back and forth, the run's events marked on the track (plans, failures,
 // bumps, faults, arrival), and the run as a replay file: download it (`*.rtnav.json`: the
 // set-up and every request with its simulated time) or load one.

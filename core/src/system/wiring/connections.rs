@@ -1,4 +1,4 @@
-//! The wiring's connections (issue 19): every data connection as made and every service
+//! The wiring's connections: every data connection as made and every service
 //! port with its calls (`links.rs`), InventGUI's in-ports, and the cut and restore of a data
 //! connection between two components.
 
