@@ -116,7 +116,8 @@ async function boot() {
   const systemBar = createSystemBar($('system-group'), app);
   const rtc = createRtcPanel($('rtc-panel'), app);
   const system = createSystemPanel($('system-panel'), app);
-  const legend = createLegend($('legend'), $('legend-body'), $('view'), app);
+  const legend = createLegend(/** @type {HTMLDetailsElement} */ ($('legend')), $('legend-body'),
+    /** @type {HTMLCanvasElement} */ ($('view')), app);
   const telemetry = createTelemetry($('telemetry'), app);
   const params = createParamsPanel($('params-panel'), app);
   const inspector = createInspector($('inspector-panel'), app);
@@ -135,10 +136,12 @@ async function boot() {
     }
     switchLanguage(languageSelect.value, kept.share ?? null);
   });
-  const tabs = createTabs($('panel-tabs'), [...document.querySelectorAll('#panels .tab-panel')], app, 'rtc');
+  const tabPanels = /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('#panels .tab-panel'));
+  const tabs = createTabs($('panel-tabs'), [...tabPanels], app, 'rtc');
   app.tabs = tabs;
   const scenarios = createScenarios(
-    { select: $('scenario'), file: $('map-file'), about: $('about'), title: $('about-title'),
+    { select: /** @type {HTMLSelectElement} */ ($('scenario')),
+      file: /** @type {HTMLInputElement} */ ($('map-file')), about: $('about'), title: $('about-title'),
       description: $('about-description'), lesson: $('about-lesson') },
     app,
   );

@@ -15,7 +15,7 @@ use rtnav::ErrorDetail;
 use rtnav::render::Layers;
 use rtnav::system::{
     CellInspection, ComparePlots, CompareTable, ComponentParameters, ExerciseStatus, FrameView,
-    MapView, PlanView, PlotWindow, ReplayCheck, ScenarioView, SystemGraph, TimelineView,
+    MapView, PlanView, PlotWindow, Refusal, ReplayCheck, ScenarioView, SystemGraph, TimelineView,
 };
 use ts_rs::{Config, TS, TypeVisitor};
 
@@ -64,6 +64,7 @@ fn declarations() -> String {
     d.visit::<CompareTable>();
     d.visit::<ComparePlots>();
     d.visit::<ErrorDetail>();
+    d.visit::<Refusal>();
     let mut out = String::from(
         "// The core's view types as the page receives them, written from the Rust types by\n\
          // `cargo xtask types` (core/tests/typescript.rs). Do not edit: change the Rust type.\n",

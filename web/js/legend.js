@@ -1,3 +1,4 @@
+// @ts-check
 // The legend over the map's corner: what the colours and lines mean, the heat
 // map's colour scale (the potential's range, log scale, from the renderer) and a scale bar.
 // It folds away (a <details>, folded at first) and is kept small: never more than about 15 %
@@ -5,7 +6,10 @@
 import { el, setText } from './dom.js';
 import { t } from './i18n.js';
 
-/** [layer, label, how the swatch looks (a CSS class)]. */
+/**
+ * [layer, label, how the swatch looks (a CSS class)].
+ * @type {Array<[keyof Layers, string, string]>}
+ */
 const ENTRIES = [
   ['occupancy', t('legend.obstacle'), 'sw-obstacle'],
   ['dmin_zone', t('legend.dmin_zone'), 'sw-dmin'],
@@ -21,13 +25,19 @@ const ENTRIES = [
 /** The scale bar's longest length, CSS pixels. */
 const SCALE_MAX_PX = 70;
 
-/** A short number: three significant digits at most (1.23e5 beyond). */
+/** A short number: three significant digits at most (1.23e5 beyond). @param {number} v */
 function short(v) {
   const a = Math.abs(v);
   if (a !== 0 && (a >= 1e4 || a < 0.01)) return v.toExponential(1).replace('e+', 'e');
   return String(Number(v.toPrecision(3)));
 }
 
+/**
+ * @param {HTMLDetailsElement} details the legend (folds away)
+ * @param {HTMLElement} body what the legend holds
+ * @param {HTMLCanvasElement} canvas the map's canvas (the scale bar's pixels per metre)
+ * @param {App} app
+ */
 export function createLegend(details, body, canvas, app) {
   const { demo } = app;
   // Folded at first: the map is what the page is for; the legend is one click away.
@@ -52,17 +62,19 @@ export function createLegend(details, body, canvas, app) {
 
   function showLayers() {
     const layers = demo.layers();
-    for (const row of rows) row.hidden = !layers[row.dataset.layer];
+    ENTRIES.forEach(([layer], i) => { rows[i].hidden = !layers[layer]; });
     heat.hidden = !layers.heat_map;
   }
   app.on('layers', showLayers);
   showLayers();
 
+  /** @param {ClientBox} a @param {ClientBox} b */
   const overlaps = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
 
   /**
    * Over the map (a wide screen), the open legend keeps off the robot: it moves to the other
    * bottom corner when the robot is under it and not under the other one.
+   * @param {() => ClientBox | null} robot
    */
   function keepOffRobot(robot) {
     if (getComputedStyle(details).position !== 'absolute') return;
@@ -80,6 +92,7 @@ export function createLegend(details, body, canvas, app) {
     /**
      * Every frame (cheap): the colour scale and the scale bar when they change, and the
      * corner (`robot()` gives the robot's client box; asked only while the legend is open).
+     * @param {() => ClientBox | null} robot
      */
     update(robot) {
       if (!details.open) return;

@@ -1,3 +1,4 @@
+// @ts-check
 // Offline after the first visit: the page's service worker (`sw.js`), which a dist folder's
 // build fills (`cargo xtask dist`) and which keeps that build's files in one cache.
 //
@@ -18,12 +19,13 @@ const supported = () => 'serviceWorker' in navigator && window.isSecureContext;
 /**
  * At the start of a load: if a new build is installed and waiting, it takes over and the
  * page loads again from it (resolves true: the caller stops); else resolves false.
+ * @returns {Promise<boolean>}
  */
 export async function takeOverWaitingBuild() {
   if (!supported()) return false;
   const registration = await Promise.race([
     navigator.serviceWorker.getRegistration().catch(() => undefined),
-    new Promise((done) => setTimeout(done, LOOK_MS)),
+    /** @type {Promise<undefined>} */ (new Promise((done) => setTimeout(done, LOOK_MS))),
   ]);
   const waiting = registration?.waiting;
   if (!waiting || !navigator.serviceWorker.controller) return false;
@@ -32,7 +34,11 @@ export async function takeOverWaitingBuild() {
   return true;
 }
 
-/** The version of the build `worker` keeps (null: none, as in `web/`). */
+/**
+ * The version of the build `worker` keeps (null: none, as in `web/`).
+ * @param {ServiceWorker} worker
+ * @returns {Promise<string | null>}
+ */
 function versionOf(worker) {
   return new Promise((done) => {
     const channel = new MessageChannel();
@@ -41,12 +47,16 @@ function versionOf(worker) {
   });
 }
 
-/** Registers the worker (the page is ready) and tells of a new build when one is installed. */
+/**
+ * Registers the worker (the page is ready) and tells of a new build when one is installed.
+ * @param {App} app
+ */
 export function keepOffline(app) {
   if (!supported()) return;
   const container = navigator.serviceWorker;
   // A build installed while this page runs on an older one: it is used from the next load
   // (a worker without a build, as in `web/`, is no new version of the page).
+  /** @param {ServiceWorker} worker */
   const tell = async (worker) => {
     if (!container.controller || document.body.dataset.offlineUpdate) return;
     if (!(await versionOf(worker))) return;

@@ -1,3 +1,4 @@
+// @ts-check
 // Scenarios and maps: the picker over the fixtures (`fixtures/index.json`, staged by
 // `cargo xtask`) and loading a map file the user picks. The bytes go to Rust (`Files`);
 // which loader a file needs, and whether it is good, is decided there. A bad file is
@@ -18,28 +19,70 @@ const LAST_KEY = 'rtnav.scenario';
 const MOVINGAI_CELL_M = 1.0;
 const CUSTOM = '';
 
+/**
+ * The file at `url` as text, or as bytes; an error unless the server answered it.
+ * @overload
+ * @param {string} url
+ * @param {'text'} how
+ * @returns {Promise<string>}
+ */
+/**
+ * @overload
+ * @param {string} url
+ * @param {'bytes'} how
+ * @returns {Promise<Uint8Array>}
+ */
+/**
+ * @param {string} url
+ * @param {'text' | 'bytes'} how
+ * @returns {Promise<string | Uint8Array>}
+ */
 async function fetchOk(url, how) {
   const r = await fetch(url);
   if (!r.ok) throw new Error(`${url}: HTTP ${r.status}`);
   return how === 'text' ? r.text() : new Uint8Array(await r.arrayBuffer());
 }
 
-/** A scenario's title in the page's language (`scenario_title.NAME`; else its name, spaced). */
+/**
+ * A scenario's title in the page's language (`scenario_title.NAME`; else its name, spaced).
+ * @param {string | undefined} name
+ */
 export function scenarioTitle(name) {
   const key = `scenario_title.${name}`;
   return has(key) ? t(key) : String(name).replaceAll('_', ' ');
 }
 
-/** A scenario's `description` or `lesson` in the page's language (the file's own is English). */
+/**
+ * A scenario's `description` or `lesson` in the page's language (the file's own is English).
+ * @param {ScenarioView} s
+ * @param {'description' | 'lesson'} what
+ */
 function scenarioText(s, what) {
   const key = `scenario.${s.name}.${what}`;
   return has(key) ? t(key) : s[what];
 }
 
+/**
+ * The top bar's elements this module fills and listens to.
+ * @typedef {object} ScenarioElements
+ * @property {HTMLSelectElement} select the scenario picker
+ * @property {HTMLInputElement} file the map file input
+ * @property {HTMLElement} about the "About" box
+ * @property {HTMLElement} title its title
+ * @property {HTMLElement} description its description
+ * @property {HTMLElement} lesson its lesson
+ */
+
+/**
+ * @param {ScenarioElements} dom
+ * @param {App} app
+ */
 export function createScenarios(dom, app) {
   const { demo } = app;
+  /** @type {ScenarioIndex} */
   let index = { default: null, scenarios: [] };
   const custom = el('option', { value: CUSTOM, disabled: true }, t('scenarios.map_file'));
+  /** @type {string | null} */
   let current = null;
 
   function showAbout() {
@@ -58,12 +101,13 @@ export function createScenarios(dom, app) {
     }
   }
 
-  /** The scenario's lesson, prominent: "Try this: …". */
+  /** The scenario's lesson, prominent: "Try this: …". @param {string} text */
   function showLesson(text) {
     dom.lesson.replaceChildren(el('strong', {}, t('scenarios.try_this')), ' ', text ?? '');
     dom.lesson.hidden = !text;
   }
 
+  /** A new system is loaded: `what` says which (the log's first entry). @param {string} what */
   function loaded(what) {
     // Whatever the notices said was about the old system.
     app.notice.hide();
@@ -79,7 +123,11 @@ export function createScenarios(dom, app) {
    * Loads the scenario named `name` from the fixtures, then applies the share token `share`
    * if given. Returns whether it loaded; with a token that could not be applied it returns
    * `{ shareError }` (the scenario is then loaded without the token's set-up, announced to
-   * nobody: the caller loads the default).
+   * nobody: the caller loads the default). No name (what the crash guard gives after a
+   * crash) is no scenario of the index.
+   * @param {string | undefined} name
+   * @param {string | null} [share]
+   * @returns {Promise<boolean | { shareError: string }>}
    */
   async function load(name, share = null) {
     const entry = index.scenarios.find((s) => s.name === name);
@@ -101,16 +149,17 @@ export function createScenarios(dom, app) {
         if (!s.ok) return { shareError: s.error };
       }
     } catch (e) {
-      app.notice.show(t('scenarios.load_failed', { name: scenarioTitle(name), error: e.message ?? e }), 'error');
-      app.log.page(t('scenarios.not_loaded', { name: scenarioTitle(name), error: e.message ?? e }), 'error');
+      const error = e instanceof Error ? e.message : e;
+      app.notice.show(t('scenarios.load_failed', { name: scenarioTitle(name), error }), 'error');
+      app.log.page(t('scenarios.not_loaded', { name: scenarioTitle(name), error }), 'error');
       dom.select.value = current ?? CUSTOM;
       return false;
     } finally {
       files.free();
     }
-    current = name;
-    dom.select.value = name;
-    try { sessionStorage.setItem(LAST_KEY, name); } catch { /* storage blocked: not kept */ }
+    current = entry.name;
+    dom.select.value = entry.name;
+    try { sessionStorage.setItem(LAST_KEY, entry.name); } catch { /* storage blocked: not kept */ }
     // The set-up is drawn at once, before the clock runs a tick: the first frame of a load
     // (and of a share link) is the set-up at its own time.
     app.stage.draw();
@@ -120,7 +169,11 @@ export function createScenarios(dom, app) {
     return true;
   }
 
-  /** Loads the set-up a share link carries; false (with a notice) when it cannot. */
+  /**
+   * Loads the set-up a share link carries; false (with a notice) when it cannot.
+   * @param {string} token
+   * @returns {Promise<boolean>}
+   */
   async function loadShared(token) {
     let name;
     try {
@@ -141,13 +194,20 @@ export function createScenarios(dom, app) {
     return false;
   }
 
+  /** @type {string | null} */
   let shareRefusal = null;
+  /** A share link refused for `reason` (said once the default is loaded). @param {string} reason */
   function refuseShare(reason) {
     shareRefusal = t('scenarios.share_refused', { reason });
     app.notice.show(shareRefusal, 'error');
     return false;
   }
 
+  /**
+   * Loads a map from the files a person picked (a map and the files it names).
+   * @param {FileList | File[]} list
+   * @returns {Promise<boolean>}
+   */
   async function loadFiles(list) {
     const files = new Files();
     const names = [...list].map((f) => f.name);
@@ -165,7 +225,7 @@ export function createScenarios(dom, app) {
     }
     current = null;
     dom.select.value = CUSTOM;
-    const map = demo.map();
+    const map = /** @type {MapView} */ (demo.map()); // just loaded
     custom.textContent = t('scenarios.map_file_named', { name: map.name });
     app.emit('tool', 'start');
     loaded(t('scenarios.map_loaded', { name: map.name, width: map.width, height: map.height, grid: map.grid_size }));
@@ -177,7 +237,7 @@ export function createScenarios(dom, app) {
     if (dom.select.value !== CUSTOM) load(dom.select.value);
   });
   dom.file.addEventListener('change', async () => {
-    if (dom.file.files.length) await loadFiles(dom.file.files);
+    if (dom.file.files?.length) await loadFiles(dom.file.files);
     dom.file.value = '';
   });
 
@@ -193,7 +253,7 @@ export function createScenarios(dom, app) {
      * @param {(() => unknown) | null} [carried]
      */
     async loadDefault(share = null, carried = null) {
-      index = JSON.parse(await fetchOk(INDEX_URL, 'text'));
+      index = /** @type {ScenarioIndex} */ (JSON.parse(await fetchOk(INDEX_URL, 'text')));
       dom.select.replaceChildren(
         ...index.scenarios.map((s) => el('option', { value: s.name, title: scenarioText(s, 'description') }, scenarioTitle(s.name))),
         custom,
@@ -214,6 +274,7 @@ export function createScenarios(dom, app) {
     get current() {
       return current;
     },
+    /** The fixtures' index (`fixtures/index.json`). */
     get index() {
       return index;
     },

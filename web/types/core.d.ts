@@ -1049,6 +1049,32 @@ theta_deg: number, };
 type Reason = { "kind": "error", error: ErrorDetail, } | { "kind": "bump", report: BumpReport, } | { "kind": "injected_fault", words: string, } | { "kind": "course_refused", error: ErrorDetail, } | { "kind": "map_update_refused", component: string, error: ErrorDetail, } | { "kind": "obstacle_ahead", ahead: number, } | { "kind": "words", words: string, };
 
 /**
+ * A refused request: serialized as the detail the page reads (`{area, kind, fields,
+ * file?, scenario?}`); the English words apart.
+ */
+type Refusal = { 
+/**
+ * The file the error is about.
+ */
+file?: string, 
+/**
+ * The scenario the error is about.
+ */
+scenario?: string, 
+/**
+ * The [`Error`] variant: `Lifecycle`, `Config`, `Map`, ….
+ */
+area: string, 
+/**
+ * The area enum's variant (`Timestamp`'s one kind is `Invalid`).
+ */
+kind: string, 
+/**
+ * The variant's named fields (an object; empty for a variant without fields).
+ */
+fields: Record<string, unknown>, };
+
+/**
  * What loading a replay found: whether the run reproduced the recorded trace.
  */
 type ReplayCheck = { 

@@ -6,6 +6,17 @@ type Attempt<T> =
   | { ok: true; value: T | undefined }
   | { ok: false; error: string; message: string };
 
+/** A scenario of the fixtures' index (`fixtures/index.json`, written by `cargo xtask`). */
+type ScenarioEntry = ScenarioView & {
+  /** The scenario file, relative to the page. */
+  url: string;
+  /** The files its map names (as the scenario writes their paths) → their URLs. */
+  files: Record<string, string>;
+};
+
+/** The fixtures' index: the default scenario's name and every scenario the page offers. */
+type ScenarioIndex = { default: string | null; scenarios: ScenarioEntry[] };
+
 /** A box on the page in client coordinates. */
 type ClientBox = { left: number; right: number; top: number; bottom: number };
 
@@ -34,6 +45,7 @@ interface App {
   frame?: FrameView;
   notice: {
     show(text: string, level: string, options?: { until?: () => boolean }): void;
+    hide(): void;
     update(keepClear: () => Array<ClientBox | null>): void;
     endState(): void;
   };
@@ -48,8 +60,10 @@ interface App {
     keepClear(): Array<ClientBox | null>;
     [name: string]: any;
   };
-  tabs?: any;
-  scenarios?: any;
+  /** The side panel's tabs (set in main.js once they are made, before the first frame). */
+  tabs: ReturnType<typeof import('../js/tabs.js').createTabs>;
+  /** The scenario picker and loader (set in main.js, before the first frame). */
+  scenarios: ReturnType<typeof import('../js/scenarios.js').createScenarios>;
 }
 
 interface Window {
