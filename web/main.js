@@ -53,20 +53,28 @@ async function boot() {
 
   // What every module shares: the handle, the crash guard, the page's own settings, and
   // `attempt` — a request whose refusal (an error value from Rust) is shown, not thrown.
-  /** @type {Map<string, Array<(...args: any[]) => void>>} */
+  /** Each event's listeners (`AppEvents` says what each is handed). @type {Map<string, Array<(...args: unknown[]) => void>>} */
   const listeners = new Map();
   const app = /** @type {App} */ ({
     demo,
     guard,
     memory: wasm.memory,
     ui: { tool: 'goal', backward: false, brush: { size: 1, unit: 'cells' }, pendingStart: null },
-    /** @param {string} name @param {(...args: any[]) => void} fn */
+    /**
+     * @template {keyof AppEvents} K
+     * @param {K} name
+     * @param {(...args: AppEvents[K]) => void} fn
+     */
     on(name, fn) {
       const fns = listeners.get(name) ?? [];
-      fns.push(fn);
+      fns.push(/** @type {(...args: unknown[]) => void} */ (fn));
       listeners.set(name, fns);
     },
-    /** @param {string} name @param {...unknown} args */
+    /**
+     * @template {keyof AppEvents} K
+     * @param {K} name
+     * @param {AppEvents[K]} args
+     */
     emit(name, ...args) {
       for (const fn of listeners.get(name) ?? []) fn(...args);
     },

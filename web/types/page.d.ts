@@ -20,6 +20,28 @@ type ScenarioIndex = { default: string | null; scenarios: ScenarioEntry[] };
 /** A box on the page in client coordinates. */
 type ClientBox = { left: number; right: number; top: number; bottom: number };
 
+/**
+ * The page's own events (`app.on`, `app.emit`) and what each hands its listeners.
+ */
+interface AppEvents {
+  /** A scenario or map file is loaded: a new system. */
+  loaded: [];
+  /** A request changed the system (a button, a parameter, a replay). */
+  changed: [];
+  /** A run carried from the other language is restored (`carry.js`). */
+  carried: [];
+  /** The layers shown changed. */
+  layers: [];
+  /** The map's view (zoom, pan) changed. */
+  view: [];
+  /** The side panel's tab `name` is shown. */
+  tab: [name: string];
+  /** The stage's tool is now `tool` (`goal`, `start`, `paint`, …). */
+  tool: [tool: string];
+  /** The map cell under the pointer (column, row), or null when it left the map. */
+  hover: [cell: ArrayLike<number> | null];
+}
+
 /** What every module shares (built in main.js). */
 interface App {
   demo: import('../pkg/rtnav_wasm.js').Demo;
@@ -36,8 +58,8 @@ interface App {
     brush: { size: number; unit: string };
     pendingStart: PoseView | null;
   };
-  on(name: string, fn: (...args: any[]) => void): void;
-  emit(name: string, ...args: unknown[]): void;
+  on<K extends keyof AppEvents>(name: K, fn: (...args: AppEvents[K]) => void): void;
+  emit<K extends keyof AppEvents>(name: K, ...args: AppEvents[K]): void;
   requestMs: number;
   attempt<T>(fn: () => T): Attempt<T>;
   request<T>(what: string, fn: () => T, endsNotices?: boolean): Attempt<T>;

@@ -1,3 +1,4 @@
+// @ts-check
 // The parameter panel: every configuration parameter of LocalPathPlanning,
 // MotorControl, DriveControl and PhysicsSim (`Demo.params()`), grouped by component, with its
 // unit, range and reflection timing (OpenRTM's 常時 "always" or 初期化時 "on activation").
@@ -18,37 +19,71 @@ import { t, has, language } from '../i18n.js';
 import { warningText } from '../say.js';
 
 const POLL_MS = 500;
+/** A reflection timing's label and hint (another: its name as the core gives it). @type {Record<string, [string, string] | undefined>} */
 const REFLECTION = {
   always: [t('params.always'), t('params.always.title')],
   on_activation: [t('params.on_activation'), t('params.on_activation.title')],
 };
+/** SetPDGain's arguments: the parameter each sets, and its label. @type {Array<[string, string]>} */
 const PD_GAINS = [['PGainL', t('params.pd.p_left')], ['PGainR', t('params.pd.p_right')], ['DGainL', t('params.pd.d_left')], ['DGainR', t('params.pd.d_right')]];
-/** Notes beside a parameter, about the system as a whole. */
+/** Notes beside a parameter, about the system as a whole. @type {Record<string, string | undefined>} */
 const NOTES = {
   'LocalPathPlanning/dmin': t('params.dmin_note'),
 };
 
-/** A parameter's value as text that reads back as the same number. */
+/** A parameter's value as text that reads back as the same number. @param {number | null | undefined} v */
 const show = (v) => (v === null || v === undefined ? '' : String(v));
+/** A unit as shown (– for none). @param {string} u */
 const unitText = (u) => (!u || u === '-' ? '–' : u);
 
-/** A parameter's name with a break allowed between its words (`Posture<wbr>Consideration<wbr>Level`). */
+/**
+ * A parameter's name with a break allowed between its words (`Posture<wbr>Consideration<wbr>Level`).
+ * @param {string} name
+ * @returns {Array<Node | string>}
+ */
 function wordsOf(name) {
   return name.split(/(?<=[a-z0-9])(?=[A-Z])/).flatMap((w, i) => (i ? [el('wbr'), w] : [w]));
 }
 
+/**
+ * One parameter's row.
+ * @typedef {object} Row
+ * @property {HTMLDivElement} node
+ * @property {HTMLInputElement} input the value, edited in place
+ * @property {HTMLSpanElement} pendingTag "pending (next activation)"
+ * @property {HTMLDivElement} error why a value was refused
+ * @property {HTMLDivElement} warning the core's warning about the value held
+ * @property {string} component
+ * @property {string} name
+ */
+/**
+ * MotorControl's SetPDGain form: its inputs by the parameter each sets, and the stability bounds.
+ * @typedef {{ inputs: Map<string, HTMLInputElement>, bounds: HTMLSpanElement }} PdForm
+ */
+/**
+ * One component's group of rows.
+ * @typedef {{ details: HTMLDetailsElement, list: HTMLDivElement, count: HTMLSpanElement, pd?: PdForm }} Group
+ */
+
+/**
+ * @param {HTMLElement} root the Parameters tab's section
+ * @param {App} app
+ */
 export function createParamsPanel(root, app) {
   const { demo } = app;
   let last = '';
   let dirty = true;
   let lastPoll = -Infinity;
+  /** @type {Map<string, Row>} */
   const rows = new Map();
+  /** @type {Map<string, Group>} */
   const groups = new Map();
-  /** The latest `params()`, by `component/name`. */
+  /** The latest `params()`, by `component/name`. @type {Map<string, ParameterView>} */
   const held = new Map();
 
   // ---------------------------------------------------------------- head: .conf files
   const message = el('p', { class: 'panel-message', id: 'conf-message', role: 'status', hidden: true });
+  /** @param {string} text @param {string} level */
   const say = (text, level) => {
     message.textContent = text;
     message.dataset.level = level;
@@ -60,6 +95,7 @@ export function createParamsPanel(root, app) {
     onclick: () => {
       const r = app.attempt(() => demo.conf_export());
       if (!r.ok) return say(t('params.export.failed', { error: r.error }), 'error');
+      if (r.value === undefined) return undefined; // the page crashed
       downloadText(r.value, 'rtnav.conf');
       say(t('params.export.saved'), 'success');
     },
@@ -95,6 +131,7 @@ export function createParamsPanel(root, app) {
 
   // ---------------------------------------------------------------- rows
 
+  /** Sends a value typed in `row`'s field. @param {Row} row @param {string} text */
   function send(row, text) {
     const { component, name } = row;
     const r = app.attempt(() => demo.set_param(component, name, text));
@@ -116,6 +153,7 @@ export function createParamsPanel(root, app) {
     app.emit('changed');
   }
 
+  /** @param {Group} group @param {ComponentParameters} c @param {ParameterView} p @returns {Row} */
   function makeRow(group, c, p) {
     const id = `param-${c.component}-${p.name}`;
     const input = el('input', {
@@ -158,6 +196,7 @@ export function createParamsPanel(root, app) {
     return row;
   }
 
+  /** @param {ComponentParameters} c @returns {Group} */
   function makeGroup(c) {
     const count = el('span', { class: 'group-count' });
     const list = el('div', { class: 'param-list' });
@@ -165,6 +204,7 @@ export function createParamsPanel(root, app) {
       el('summary', {}, el('span', { class: 'group-name' }, c.component), count),
       list);
     body.append(details);
+    /** @type {Group} */
     const group = { details, list, count };
     groups.set(c.component, group);
     if (c.component === 'MotorControl') group.pd = makePdForm(details);
@@ -172,7 +212,9 @@ export function createParamsPanel(root, app) {
   }
 
   // ---------------------------------------------------------------- SetPDGain
+  /** @param {HTMLDetailsElement} details MotorControl's group @returns {PdForm} */
   function makePdForm(details) {
+    /** @type {Map<string, HTMLInputElement>} */
     const inputs = new Map();
     const error = el('div', { class: 'param-error', role: 'alert', hidden: true });
     const fields = PD_GAINS.map(([name, label]) => {
@@ -180,7 +222,7 @@ export function createParamsPanel(root, app) {
       inputs.set(name, input);
       return el('label', { class: 'pd-field' }, el('span', {}, label), input);
     });
-    const number = (t) => (t.trim() === '' ? Number.NaN : Number(t));
+    const number = (/** @type {string} */ t) => (t.trim() === '' ? Number.NaN : Number(t));
     const bounds = el('span', { class: 'pd-bounds', id: 'pd-bounds' });
     const explain = el('div', { class: 'pd-explain', id: 'pd-explain' },
       el('p', {}, t('params.pd.explain')),
@@ -193,7 +235,7 @@ export function createParamsPanel(root, app) {
       error);
     form.addEventListener('submit', (e) => {
       e.preventDefault();
-      const [pl, pr, dl, dr] = PD_GAINS.map(([n]) => number(inputs.get(n).value));
+      const [pl, pr, dl, dr] = PD_GAINS.map(([n]) => number(/** @type {HTMLInputElement} */ (inputs.get(n)).value));
       const r = app.attempt(() => demo.set_pd_gain(pl, pr, dl, dr));
       if (!r.ok) {
         error.textContent = r.error;
@@ -208,9 +250,8 @@ export function createParamsPanel(root, app) {
       refresh();
       app.emit('changed');
     });
-    details.querySelector('summary').after(form);
-    inputs.bounds = bounds;
-    return inputs;
+    /** @type {HTMLElement} */ (details.querySelector('summary')).after(form);
+    return { inputs, bounds };
   }
 
   // ---------------------------------------------------------------- refresh
@@ -249,12 +290,12 @@ export function createParamsPanel(root, app) {
       }
       setText(group.count, t(pending ? 'params.count.pending' : 'params.count', { n: c.params.length, pending }));
       if (group.pd) {
-        for (const [n, input] of group.pd) {
+        for (const [n, input] of group.pd.inputs) {
           if (document.activeElement !== input) input.value = show(held.get(`MotorControl/${n}`)?.value);
         }
         // The bounds now: 2·D/Δt for each wheel.
         const dt = c.period_s;
-        const bound = (d) => Number((2 * held.get(`MotorControl/${d}`).value / dt).toPrecision(6));
+        const bound = (/** @type {string} */ d) => Number((2 * (held.get(`MotorControl/${d}`)?.value ?? Number.NaN) / dt).toPrecision(6));
         setText(group.pd.bounds, t('params.pd.bounds', { dt: Number((dt * 1000).toPrecision(6)), left: bound('DGainL'), right: bound('DGainR') }));
       }
     }
@@ -272,7 +313,11 @@ export function createParamsPanel(root, app) {
   app.on('tab', (name) => { if (name === 'params') dirty = true; });
 
   return {
-    /** Called every frame: reads the parameters when something changed, else twice a second. */
+    /**
+     * Called every frame: reads the parameters when something changed, else twice a second.
+     * @param {number} now the frame's time [ms]
+     * @param {boolean} visible whether the Parameters tab is shown
+     */
     update(now, visible) {
       if (!visible) return;
       if (dirty || now - lastPoll >= POLL_MS) {

@@ -1,3 +1,4 @@
+// @ts-check
 // The plots: the last 10 s of telemetry (`Demo.plot(10)`) on four small canvases
 // drawn here with the 2D context (no chart library):
 //   (a) MotorControl's target wheel rates against the physics' actual ones, left and right;
@@ -28,6 +29,28 @@ const W = '#7048e8';
 const DEV = '#c92a2a';
 const DASH = [5, 3];
 
+/**
+ * A field of the plot window that is a series over time.
+ * @typedef {{ [K in keyof PlotWindow]: PlotWindow[K] extends ReadonlyArray<number | null> ? K : never }[keyof PlotWindow]} SeriesKey
+ */
+/**
+ * A field of the plot window that is one number (a limit drawn as a line).
+ * @typedef {{ [K in keyof PlotWindow]: PlotWindow[K] extends number ? K : never }[keyof PlotWindow]} LimitKey
+ */
+/** A series drawn: its field, label, colour and dash (solid without). @typedef {[key: SeriesKey, label: string, colour: string, dash?: number[]]} Series */
+/**
+ * One plot.
+ * @typedef {object} PlotSpec
+ * @property {string} id the canvas's id
+ * @property {string} title
+ * @property {string} unit
+ * @property {Series[]} series
+ * @property {SeriesKey[]} [range] the series the y-range follows (else all)
+ * @property {[key: LimitKey, label: string]} [limit] a limit drawn as a dotted line
+ * @property {boolean} [symmetric] the limit is drawn at ± its value
+ */
+
+/** @type {PlotSpec[]} */
 const PLOTS = [
   {
     id: 'plot-rates', title: t('plots.rates'), unit: 'rad/s',
@@ -58,7 +81,7 @@ const PLOTS = [
   },
 ];
 
-/** A step of 1, 2 or 5 × 10^n giving about `n` intervals over `range`. */
+/** A step of 1, 2 or 5 × 10^n giving about `n` intervals over `range`. @param {number} range @param {number} n */
 function niceStep(range, n) {
   const raw = range / n;
   const p = 10 ** Math.floor(Math.log10(raw));
@@ -66,13 +89,19 @@ function niceStep(range, n) {
   return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * p;
 }
 
+/** A tick's label, with the decimals the step needs. @param {number} v @param {number} step */
 function tickLabel(v, step) {
   const digits = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
   const t = v.toFixed(Math.min(digits, 6));
   return t === '-0' || /^-0\.0*$/.test(t) ? t.slice(1) : t;
 }
 
-/** The y-range of every finite value in `arrays` (and `extra`), padded. */
+/**
+ * The y-range of every finite value in `arrays` (and `extra`), padded.
+ * @param {Array<ReadonlyArray<number | null> | undefined>} arrays
+ * @param {number[]} extra
+ * @returns {[number, number]}
+ */
 function yRange(arrays, extra) {
   let lo = Infinity;
   let hi = -Infinity;
@@ -98,9 +127,14 @@ function yRange(arrays, extra) {
   return [lo - pad, hi + pad];
 }
 
+/**
+ * @param {HTMLElement} root the Plots tab's section
+ * @param {App} app
+ */
 export function createPlots(root, app) {
   const { demo } = app;
   let lastDraw = -Infinity;
+  /** @type {number | null} */
   let lastT = null;
   let dirty = true;
   let draws = 0;
@@ -114,6 +148,11 @@ export function createPlots(root, app) {
     ...canvases.map((c) => el('div', { class: 'plot-box' }, c)),
   );
 
+  /**
+   * Sizes `canvas` for the device's pixels; its context in CSS pixels, and its size.
+   * @param {HTMLCanvasElement} canvas
+   * @returns {[CanvasRenderingContext2D, number, number]}
+   */
   function prepare(canvas) {
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
     const w = Math.max(120, Math.round(canvas.clientWidth * dpr));
@@ -122,17 +161,26 @@ export function createPlots(root, app) {
       canvas.width = w;
       canvas.height = h;
     }
-    const ctx = canvas.getContext('2d');
+    const ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     return [ctx, w / dpr, h / dpr];
   }
 
+  /**
+   * Draws the plot `spec` of `data` over the times `t0`…`t1` [s].
+   * @param {HTMLCanvasElement} canvas
+   * @param {PlotSpec} spec
+   * @param {PlotWindow} data
+   * @param {number} t0
+   * @param {number} t1
+   */
   function drawPlot(canvas, spec, data, t0, t1) {
     const [ctx, W_, H] = prepare(canvas);
     ctx.clearRect(0, 0, W_, H);
     ctx.textBaseline = 'middle';
     // Title with the unit, top left; the legend beside it, or under it when it does not fit.
     const title = `${spec.title} [${spec.unit}]`;
+    /** @type {Array<[label: string, colour: string, dash: number[] | undefined]>} */
     const legend = spec.series.map(([, label, colour, dash]) => [label, colour, dash]);
     if (spec.limit) legend.push([spec.limit[1], INK, [2, 2]]);
     ctx.font = FONT;
@@ -170,9 +218,9 @@ export function createPlots(root, app) {
     const ranged = spec.range ?? spec.series.map(([k]) => k);
     const [lo, hi] = yRange(ranged.map((k) => data[k]), [...limits, 0]);
     // Values of the other series beyond the range are cut at the frame: say so.
-    const beyond = spec.series.some(([k]) => (data[k] ?? []).some((v) => Number.isFinite(v) && (v > hi || v < lo)));
-    const x = (t) => m.l + ((t - t0) / (t1 - t0)) * pw;
-    const y = (v) => m.t + (1 - (v - lo) / (hi - lo)) * ph;
+    const beyond = spec.series.some(([k]) => (data[k] ?? []).some((v) => v !== null && Number.isFinite(v) && (v > hi || v < lo)));
+    const x = (/** @type {number} */ t) => m.l + ((t - t0) / (t1 - t0)) * pw;
+    const y = (/** @type {number} */ v) => m.t + (1 - (v - lo) / (hi - lo)) * ph;
 
     // Grid, ticks and labels.
     ctx.strokeStyle = GRID;
@@ -293,7 +341,11 @@ export function createPlots(root, app) {
   window.addEventListener('resize', () => { dirty = true; });
 
   return {
-    /** Called every frame: redraws at most every 100 ms, and only when time moved. */
+    /**
+     * Called every frame: redraws at most every 100 ms, and only when time moved.
+     * @param {number} now the frame's time [ms]
+     * @param {boolean} visible whether the Plots tab is shown
+     */
     update(now, visible) {
       if (!visible || now - lastDraw < REDRAW_MS) return;
       const t = demo.time_s();

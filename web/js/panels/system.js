@@ -1,3 +1,4 @@
+// @ts-check
 // The System tab: the system as RT System Editor draws it — every RT-component a
 // box in its state's colour, its data ports and service ports as markers on the box, the
 // connections as lines — laid out from the core's own description (`demo.system_graph()`,
@@ -27,10 +28,18 @@ const GAP_Y = 26;
 const PAD = 12;
 /** Which side of the box a port sits on. */
 const LEFT = new Set(['in', 'provided']);
-/** A port's kind in words (`system.kind.in`, …). */
+/** A port's kind in words (`system.kind.in`, …). @param {PortKind} kind */
 const kindWords = (kind) => (has(`system.kind.${kind}`) ? t(`system.kind.${kind}`) : kind);
 const GUI_NOTE = t('system.gui_note');
 
+/**
+ * An SVG element: `svg('rect', { x, y, class }, child…)`.
+ * @template {keyof SVGElementTagNameMap} K
+ * @param {K} tag
+ * @param {Record<string, string | number | boolean | null | undefined>} [attrs]
+ * @param {...(Node | string | null | undefined)} children
+ * @returns {SVGElementTagNameMap[K]}
+ */
 function svg(tag, attrs = {}, ...children) {
   const node = document.createElementNS(SVG, tag);
   for (const [k, v] of Object.entries(attrs)) {
@@ -41,11 +50,31 @@ function svg(tag, attrs = {}, ...children) {
   return node;
 }
 
+/** A port's key: `component.port`. @param {string} component @param {string} port */
 const portKey = (component, port) => `${component}.${port}`;
 
-/** Boxes in the description's order (data-flow order), `cols` to a row; ports in rows. */
+/**
+ * A component's box before it is placed: its ports on the left (in, provided) and on the
+ * right (out, required), its height and column.
+ * @typedef {{ c: GraphComponent, left: GraphPort[], right: GraphPort[], h: number, col: number }} Box
+ */
+/** A box placed (its top left corner). @typedef {Box & { x: number, y: number }} PlacedBox */
+/** A port placed: where its marker is, on which side, and whose it is. @typedef {{ x: number, y: number, left: boolean, port: GraphPort, box: string }} PlacedPort */
+/**
+ * The diagram's layout: the boxes by component, the ports by `portKey`, the size.
+ * @typedef {{ boxes: Map<string, PlacedBox>, ports: Map<string, PlacedPort>, width: number, height: number }} Geometry
+ */
+
+/**
+ * Boxes in the description's order (data-flow order), `cols` to a row; ports in rows.
+ * @param {SystemGraph} graph
+ * @param {number} cols
+ * @returns {Geometry}
+ */
 function layout(graph, cols) {
+  /** @type {Map<string, PlacedBox>} */
   const boxes = new Map();
+  /** @type {Box[][]} */
   const rows = [];
   graph.components.forEach((c, i) => {
     const left = c.ports.filter((p) => LEFT.has(p.kind));
@@ -54,6 +83,7 @@ function layout(graph, cols) {
     const row = Math.floor(i / cols);
     (rows[row] ??= []).push({ c, left, right, h, col: i % cols });
   });
+  /** @type {Map<string, PlacedPort>} */
   const ports = new Map();
   let y = PAD;
   for (const row of rows) {
@@ -77,7 +107,11 @@ function layout(graph, cols) {
   return { boxes, ports, width, height: y - GAP_Y + PAD };
 }
 
-/** A curve from an out-port (right edge) to an in-port (left edge), around the boxes' sides. */
+/**
+ * A curve from an out-port (right edge) to an in-port (left edge), around the boxes' sides.
+ * @param {PlacedPort} a
+ * @param {PlacedPort} b
+ */
 function curve(a, b) {
   const d = Math.max(36, Math.abs(b.x - a.x) / 2);
   const ax = a.left ? a.x - d : a.x + d;
@@ -85,30 +119,60 @@ function curve(a, b) {
   return `M${a.x},${a.y} C${ax},${a.y} ${bx},${b.y} ${b.x},${b.y}`;
 }
 
+/**
+ * A port in lines: what it is, its operations (a service port's), its newest sample or last
+ * call, how many it carried.
+ * @param {string} component
+ * @param {GraphPort} p
+ * @returns {string[]}
+ */
 function describePort(component, p) {
   const head = `${component}.${p.name} · ${kindWords(p.kind)} · ${p.interface}`;
   const ops = p.operations?.length ? t('system.operations', { names: p.operations.join(', ') }) : null;
   const service = p.kind === 'provided' || p.kind === 'required';
   const last = p.last ? p.last.text : t(service ? 'system.no_call' : 'system.no_sample');
-  return [head, ops, last, t(service ? 'system.calls' : 'system.samples', { n: p.count })].filter(Boolean);
+  return /** @type {string[]} */ ([head, ops, last, t(service ? 'system.calls' : 'system.samples', { n: p.count })].filter(Boolean));
 }
 
+/**
+ * The element matching `selector` at or around the event's target (the diagram's are SVG).
+ * @param {Event} e
+ * @param {string} selector
+ * @returns {SVGElement | null}
+ */
+const around = (e, selector) => (e.target instanceof Element ? e.target.closest(selector) : null);
+
+/**
+ * @param {HTMLElement} root the System tab's section
+ * @param {App} app
+ */
 export function createSystemPanel(root, app) {
   const { demo } = app;
+  /** The description last read. @type {SystemGraph | null} */
   let graph = null;
+  /** @type {Geometry | null} */
   let geometry = null;
   let cols = 0;
   let shape = '';
   let last = -Infinity;
+  /** @type {string | null} */
   let selectedBox = null;
+  /** @type {string | null} */
   let selectedPort = null;
+  /** @type {string | null} */
   let hoverPort = null;
+  /** Each port's count when last painted (a grown one pulses). @type {Map<string, number>} */
   const counts = new Map();
+  /** @type {Map<string, { g: SVGGElement, marker: SVGCircleElement | SVGRectElement }>} */
   const portNodes = new Map();
+  /** @type {Map<string, { g: SVGGElement, head: SVGRectElement, title: SVGTextElement, state: SVGTextElement, status: SVGTextElement }>} */
   const boxNodes = new Map();
+  /** @type {Map<string, SVGPathElement>} */
   const lineNodes = new Map();
+  /** The frame's components (their colours, states and activities). @type {ComponentView[]} */
   let components = [];
 
+  /** @param {string} what @param {() => unknown} fn */
   const request = (what, fn, ends = false) => {
     const r = app.request(what, fn, ends);
     last = -Infinity;
@@ -129,7 +193,8 @@ export function createSystemPanel(root, app) {
     reset: el('button', { type: 'button', class: 'secondary', 'data-act': 'reset' }, t('rtc.reset')),
     fault: el('button', { type: 'button', class: 'danger', 'data-act': 'fault' }, t('rtc.fault')),
   };
-  for (const [act, b] of Object.entries(buttons)) {
+  for (const [key, b] of Object.entries(buttons)) {
+    const act = /** @type {keyof typeof buttons} */ (key);
     b.addEventListener('click', () => {
       if (!selectedBox) return;
       const name = selectedBox;
@@ -157,18 +222,20 @@ export function createSystemPanel(root, app) {
 
   // ------------------------------------------------------------------ drawing
 
-  function build() {
+  /** Draws the diagram of `graph` anew. @param {SystemGraph} graph */
+  function build(graph) {
     picture.replaceChildren();
     portNodes.clear();
     boxNodes.clear();
     lineNodes.clear();
-    geometry = layout(graph, cols);
-    picture.setAttribute('viewBox', `0 0 ${geometry.width} ${geometry.height}`);
-    picture.style.aspectRatio = `${geometry.width} / ${geometry.height}`;
+    const geo = layout(graph, cols);
+    geometry = geo;
+    picture.setAttribute('viewBox', `0 0 ${geo.width} ${geo.height}`);
+    picture.style.aspectRatio = `${geo.width} / ${geo.height}`;
     const lines = svg('g', { class: 'sys-lines' });
     for (const e of graph.connections) {
-      const a = geometry.ports.get(portKey(e.from.component, e.from.port));
-      const b = geometry.ports.get(portKey(e.to.component, e.to.port));
+      const a = geo.ports.get(portKey(e.from.component, e.from.port));
+      const b = geo.ports.get(portKey(e.to.component, e.to.port));
       if (!a || !b) continue;
       const path = svg('path', { d: curve(a, b), class: `sys-line ${e.kind}`, 'data-id': e.id });
       path.append(svg('title', {}, `${e.id.replace('->', ' → ')} (${e.interface})`));
@@ -176,7 +243,7 @@ export function createSystemPanel(root, app) {
       lineNodes.set(e.id, path);
     }
     const boxes = svg('g', { class: 'sys-boxes' });
-    for (const [name, b] of geometry.boxes) {
+    for (const [name, b] of geo.boxes) {
       const g = svg('g', { class: `sys-box${b.c.rtc ? '' : ' gui'}`, 'data-component': name, tabindex: 0, role: 'button',
         'aria-label': b.c.rtc ? t('system.box.aria', { name: b.c.instance_name }) : 'InventGUI' });
       const body = svg('rect', { x: b.x, y: b.y, width: BOX_W, height: b.h, rx: 5, class: 'sys-body' });
@@ -186,7 +253,7 @@ export function createSystemPanel(root, app) {
       const status = svg('text', { x: b.x + 7, y: b.y + HEAD_H + 11, class: 'sys-status' }, b.c.rtc ? '' : t('system.gui_status'));
       g.append(body, head, title, state, status);
       for (const p of [...b.left, ...b.right]) {
-        const at = geometry.ports.get(portKey(name, p.name));
+        const at = /** @type {PlacedPort} */ (geo.ports.get(portKey(name, p.name)));
         const service = p.kind === 'provided' || p.kind === 'required';
         const marker = service
           ? svg('circle', { cx: at.x, cy: at.y, r: 4, class: `sys-port ${p.kind}` })
@@ -210,16 +277,23 @@ export function createSystemPanel(root, app) {
     picture.append(lines, boxes);
   }
 
+  /** The port `name` of `component` in the description last read. @param {string} component @param {string} name */
   function port(component, name) {
     return graph?.components.find((c) => c.name === component)?.ports.find((p) => p.name === name);
   }
 
+  /**
+   * Shows the port `key`'s lines beside it (under the pointer of `event`, if given).
+   * @param {string} key
+   * @param {PointerEvent | MouseEvent} [event]
+   */
   function showTip(key, event) {
     const at = geometry?.ports.get(key);
     const node = portNodes.get(key);
     if (!at || !node) return;
     hoverPort = key;
     const p = port(at.box, at.port.name);
+    if (!p) return; // the layout is of the description read: never
     tooltip.replaceChildren(...describePort(at.box, p).map((line, i) => el('div', { class: i === 0 ? 'tip-head' : null }, line)));
     tooltip.hidden = false;
     const r = node.marker.getBoundingClientRect();
@@ -235,32 +309,35 @@ export function createSystemPanel(root, app) {
     tooltip.hidden = true;
   }
 
+  /** @param {string} key */
   function selectPort(key) {
     selectedPort = key;
-    const at = geometry.ports.get(key);
-    if (at && graph.components.find((c) => c.name === at.box)?.rtc) selectedBox = at.box;
+    const at = geometry?.ports.get(key);
+    if (at && graph?.components.find((c) => c.name === at.box)?.rtc) selectedBox = at.box;
     paint();
   }
 
+  /** The port row's key (its `data-component` and `data-port`). @param {SVGElement} row */
+  const rowKey = (row) => portKey(row.dataset.component ?? '', row.dataset.port ?? '');
   picture.addEventListener('pointerover', (e) => {
-    const row = e.target.closest?.('.sys-port-row');
-    if (row) showTip(portKey(row.dataset.component, row.dataset.port), e);
+    const row = around(e, '.sys-port-row');
+    if (row) showTip(rowKey(row), e);
   });
   picture.addEventListener('pointerout', (e) => {
-    const row = e.target.closest?.('.sys-port-row');
-    if (row && !row.contains(e.relatedTarget)) hideTip();
+    const row = around(e, '.sys-port-row');
+    if (row && !row.contains(/** @type {Node | null} */ (e.relatedTarget))) hideTip();
   });
   picture.addEventListener('click', (e) => {
-    const row = e.target.closest?.('.sys-port-row');
+    const row = around(e, '.sys-port-row');
     if (row) {
-      const key = portKey(row.dataset.component, row.dataset.port);
+      const key = rowKey(row);
       selectPort(key);
       showTip(key, e);
       return;
     }
-    const box = e.target.closest?.('.sys-box');
+    const box = around(e, '.sys-box');
     if (box) {
-      const c = graph.components.find((x) => x.name === box.dataset.component);
+      const c = graph?.components.find((x) => x.name === box.dataset.component);
       selectedBox = c?.rtc ? c.name : null;
       selectedPort = null;
       if (!c?.rtc) details.replaceChildren(el('p', { class: 'panel-hint' }, GUI_NOTE));
@@ -269,9 +346,9 @@ export function createSystemPanel(root, app) {
   });
   picture.addEventListener('keydown', (e) => {
     if (e.key !== 'Enter' && e.key !== ' ') return;
-    const box = e.target.closest?.('.sys-box');
+    const box = around(e, '.sys-box');
     if (!box) return;
-    const c = graph.components.find((x) => x.name === box.dataset.component);
+    const c = graph?.components.find((x) => x.name === box.dataset.component);
     selectedBox = c?.rtc ? c.name : null;
     selectedPort = null;
     paint();
@@ -286,6 +363,7 @@ export function createSystemPanel(root, app) {
       delete details.dataset.port;
       return;
     }
+    if (!graph || !geometry) return;
     const at = geometry.ports.get(selectedPort);
     const p = at && port(at.box, at.port.name);
     if (!p) return;
@@ -319,7 +397,7 @@ export function createSystemPanel(root, app) {
     }
     setText(details.querySelector('.system-port-sample'), lines.slice(1, -1).join(' · '));
     setText(details.querySelector('.system-port-count'), lines[lines.length - 1]);
-    for (const li of details.querySelectorAll('.system-conns li')) {
+    for (const li of /** @type {NodeListOf<HTMLLIElement>} */ (details.querySelectorAll('.system-conns li'))) {
       const e = graph.connections.find((x) => x.id === li.dataset.id);
       if (e) setText(li.querySelector('.conn-count'), e.cut ? t('system.cut_state') : t(e.kind === 'service' ? 'system.calls' : 'system.samples', { n: e.carried }));
     }
@@ -381,7 +459,7 @@ export function createSystemPanel(root, app) {
     setText(buttons.fault, t(ci?.fault_pending ? 'rtc.fault.pending' : 'rtc.fault'));
     paintDetails();
     if (hoverPort) {
-      const at = geometry.ports.get(hoverPort);
+      const at = geometry?.ports.get(hoverPort);
       const p = at && port(at.box, at.port.name);
       if (p) {
         const lines = describePort(at.box, p);
@@ -395,16 +473,18 @@ export function createSystemPanel(root, app) {
     return Math.max(1, Math.min(3, Math.floor((w + 40) / 300)));
   }
 
+  /** Reads the description; lays the diagram out again if its shape changed (or `force`). @param {boolean} force */
   function refresh(force) {
     const r = app.attempt(() => demo.system_graph());
-    if (!r.ok) return;
-    graph = r.value;
+    if (!r.ok || r.value === undefined) return;
+    const g = r.value;
+    graph = g;
     const c = columns();
-    const s = `${c}|${graph.components.map((x) => `${x.name}:${x.ports.map((p) => p.name).join(',')}`).join(';')}|${graph.connections.length}`;
+    const s = `${c}|${g.components.map((x) => `${x.name}:${x.ports.map((p) => p.name).join(',')}`).join(';')}|${g.connections.length}`;
     if (force || s !== shape) {
       cols = c;
       shape = s;
-      build();
+      build(g);
     }
     paint();
   }
@@ -415,7 +495,12 @@ export function createSystemPanel(root, app) {
   app.on('changed', () => { last = -Infinity; });
 
   return {
-    /** Reads the description at most every UPDATE_MS, and only while the tab is shown. */
+    /**
+     * Reads the description at most every UPDATE_MS, and only while the tab is shown.
+     * @param {number} now the frame's time [ms]
+     * @param {boolean} visible whether the System tab is shown
+     * @param {ComponentView[]} [comps] the frame's components
+     */
     update(now, visible, comps) {
       components = comps ?? components;
       if (!visible || now - last < UPDATE_MS) return;
