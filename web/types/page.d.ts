@@ -36,6 +36,8 @@ interface App {
     show(text: string, level: string, options?: { until?: () => boolean }): void;
     update(keepClear: () => Array<ClientBox | null>): void;
     endState(): void;
+    /** Hides whatever the notice says (a new run: it was about the old one). */
+    hide(): void;
   };
   log: {
     clear(): void;
