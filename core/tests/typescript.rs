@@ -14,7 +14,7 @@ use std::path::Path;
 use rtnav::ErrorDetail;
 use rtnav::render::Layers;
 use rtnav::system::{
-    CellInspection, ComparePlots, CompareTable, ComponentParameters, ExerciseStatus, FrameView,
+    CellInspection, ComparePlots, CompareTable, ComponentParameters, ExerciseView, FrameView,
     MapView, PlanView, PlotWindow, Refusal, ReplayCheck, ScenarioView, SystemGraph, TimelineView,
 };
 use ts_rs::{Config, TS, TypeVisitor};
@@ -58,7 +58,7 @@ fn declarations() -> String {
     d.visit::<PlotWindow>();
     d.visit::<CellInspection>();
     d.visit::<SystemGraph>();
-    d.visit::<ExerciseStatus>();
+    d.visit::<ExerciseView>();
     d.visit::<TimelineView>();
     d.visit::<ReplayCheck>();
     d.visit::<CompareTable>();

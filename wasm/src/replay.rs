@@ -1,4 +1,4 @@
-//! Replays, the timeline and the compare view — each one call into the core's
+//! Replays, the timeline, the restart and the compare view — each one call into the core's
 //! [`Session`](rtnav::system::Session) and [`Comparison`].
 
 use rtnav::render::Screen;
@@ -33,6 +33,14 @@ impl Demo {
     /// Moves to simulated time `t_s` (back or forth, from the nearest checkpoint).
     pub fn seek(&mut self, t_s: f64) -> Result<(), JsValue> {
         let r = self.session.seek_s(t_s);
+        self.changed(r).map_err(js)
+    }
+
+    /// Starts the run again: the set-up it started from with the parameters as they are
+    /// now, at time 0, the clock running, the exercise's checklist afresh
+    /// (`Session::restart`). Refused when no scenario is loaded.
+    pub fn restart(&mut self) -> Result<(), JsValue> {
+        let r = self.session.restart();
         self.changed(r).map_err(js)
     }
 

@@ -63,10 +63,11 @@ impl Demo {
         value(&self.session.plot(seconds))
     }
 
-    /// The scenario's exercise as it stands, or `null` when the scenario has none.
-    #[wasm_bindgen(unchecked_return_type = "ExerciseStatus | null")]
+    /// The scenario's exercise as it stands, with the clock's pause, or `null` when the
+    /// scenario has none.
+    #[wasm_bindgen(unchecked_return_type = "ExerciseView | null")]
     pub fn exercise(&self) -> Result<JsValue, JsValue> {
-        value(&self.session.exercise())
+        value(&self.session.exercise_view())
     }
 
     /// The telemetry history as CSV (header first).

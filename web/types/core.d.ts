@@ -450,9 +450,15 @@ text: string,
 data: Record<string, unknown> | null, };
 
 /**
- * The exercise as it stands.
+ * The scenario's exercise as the page's panel shows it: what the watch decided, and the
+ * session's clock, so the panel never says the drive runs while the clock stands still.
  */
-type ExerciseStatus = { 
+type ExerciseView = { 
+/**
+ * Whether the session's clock is paused: an exercise waiting or running goes on only
+ * when it runs.
+ */
+paused: boolean, 
 /**
  * The task.
  */
@@ -550,7 +556,7 @@ events: Array<EventView>,
 /**
  * The scenario's exercise as it stands (`null` when it has none).
  */
-exercise: ExerciseStatus | null, };
+exercise: ExerciseView | null, };
 
 /**
  * One box of the picture.

@@ -70,6 +70,8 @@ interface App {
     hide(): void;
     update(keepClear: () => Array<ClientBox | null>): void;
     endState(): void;
+    /** Hides whatever the notice says (a new run: it was about the old one). */
+    hide(): void;
   };
   log: {
     clear(): void;

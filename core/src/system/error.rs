@@ -199,6 +199,13 @@ pub enum SessionError {
         /// This build's.
         this_build: u32,
     },
+    /// A restart asked of a session with no scenario loaded (nothing, or a map picked from a
+    /// file): there is no set-up to start again from.
+    #[error(
+        "restart: no scenario is loaded (a map picked from a file has no set-up to start \
+         again from)"
+    )]
+    NothingToRestart,
     /// A clock speed outside the range offered.
     #[error("speed {speed}× is outside {min}× to {max}×")]
     BadSpeed {

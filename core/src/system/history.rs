@@ -211,6 +211,11 @@ impl History {
         h
     }
 
+    /// The set-up the run started from.
+    pub fn setup(&self) -> &Setup {
+        &self.setup
+    }
+
     /// A request carried out at `t_ns` by a person: what was recorded after it is dropped.
     pub fn record(&mut self, t_ns: u64, input: Input) {
         self.inputs.truncate(self.next);

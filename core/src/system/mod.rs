@@ -153,7 +153,7 @@ pub use status::{ComponentInfo, Status, SystemState};
 pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
 pub use timeline::Timeline;
 pub use views::{
-    ClockView, ComponentView, DirectionView, EventLevel, EventView, FrameView, MapView, PlanView,
-    PoseView, ScenarioView, TelemetryView,
+    ClockView, ComponentView, DirectionView, EventLevel, EventView, ExerciseView, FrameView,
+    MapView, PlanView, PoseView, ScenarioView, TelemetryView,
 };
 pub use wiring::{Report, Wiring};

@@ -22,6 +22,8 @@
 //!   carried out with its time — a [`Replay`] to download or to load — checkpoints to seek
 //!   back and forth in time, and the timeline's marks. Recorded requests after the time
 //!   reached are replayed as time advances; a request made there drops them.
+//! - **The restart** ([`Session::restart`]): the run started again from its set-up, with the
+//!   parameters as they are now — a new history.
 
 use std::collections::BTreeMap;
 

@@ -3,6 +3,7 @@
 //! (requests replayed at their times, checkpoints, marks); the exercise's watch after time
 //! ran; pause and speed.
 
+use super::super::views::ExerciseView;
 use super::*;
 
 impl Session {
@@ -118,6 +119,15 @@ impl Session {
     /// The scenario's exercise as it stands, if it has one.
     pub fn exercise(&self) -> Option<ExerciseStatus> {
         self.exercise.as_ref().map(ExerciseWatch::status)
+    }
+
+    /// The scenario's exercise as the page shows it, with the clock's pause (what a frame
+    /// reads, [`Session::frame`]).
+    pub fn exercise_view(&self) -> Option<ExerciseView> {
+        self.exercise().map(|status| ExerciseView {
+            status,
+            paused: self.paused(),
+        })
     }
 
     /// Pauses or resumes the clock.

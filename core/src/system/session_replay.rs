@@ -1,5 +1,5 @@
-//! The session's replays and its moves in time (a child of `session.rs`; see its module
-//! documentation and [`History`]).
+//! The session's replays and its moves in time — seeking, restarting — (a child of
+//! `session.rs`; see its module documentation and [`History`]).
 
 use serde::Serialize;
 
@@ -149,6 +149,30 @@ impl Session {
             self.clock.pending_ns = 0;
         }
         self.run_to(target);
+        self.look();
+        Ok(())
+    }
+
+    /// Starts the run again (the exercise panel's Restart): the set-up the run started from
+    /// — the scenario as loaded, or the share link or replay it was opened with — with the
+    /// parameters as they are now (every tunable parameter a person changed, however:
+    /// typed, imported from a `.conf`), at time 0, with the clock running and the
+    /// exercise's checklist afresh. The poses, map edits and other requests made during the
+    /// run are not kept.
+    ///
+    /// A restart begins a new run: its history starts at the restarted set-up, so a replay
+    /// made after it is that set-up and the requests made since, and replays to the same
+    /// trace hash and verdict. [`SessionError::NothingToRestart`] when no scenario is loaded;
+    /// on an error nothing changes.
+    pub fn restart(&mut self) -> crate::Result<()> {
+        let history = self
+            .history
+            .as_ref()
+            .ok_or(SessionError::NothingToRestart)?;
+        let mut setup = history.setup().clone();
+        setup.params = self.setup()?.params;
+        self.restart_setup(&setup)?;
+        self.clock.paused = false;
         self.look();
         Ok(())
     }

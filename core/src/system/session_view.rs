@@ -70,7 +70,7 @@ impl Session {
             telemetry: self.telemetry(),
             components: self.components(),
             events,
-            exercise: self.exercise(),
+            exercise: self.exercise_view(),
         }
     }
 

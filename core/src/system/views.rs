@@ -290,6 +290,19 @@ pub struct ClockView {
     pub tick_s: f64,
 }
 
+/// The scenario's exercise as the page's panel shows it: what the watch decided, and the
+/// session's clock, so the panel never says the drive runs while the clock stands still.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
+pub struct ExerciseView {
+    /// The task, the checks and the verdict (`ExerciseWatch`'s).
+    #[serde(flatten)]
+    pub status: ExerciseStatus,
+    /// Whether the session's clock is paused: an exercise waiting or running goes on only
+    /// when it runs.
+    pub paused: bool,
+}
+
 /// One frame's read of the session: everything the page shows every frame, read once and
 /// handed to its panels.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -304,5 +317,5 @@ pub struct FrameView {
     /// The events since the last frame, oldest first.
     pub events: Vec<EventView>,
     /// The scenario's exercise as it stands (`null` when it has none).
-    pub exercise: Option<ExerciseStatus>,
+    pub exercise: Option<ExerciseView>,
 }

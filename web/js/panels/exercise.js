@@ -1,8 +1,11 @@
 // @ts-check
 // The exercise of a scenario: its task, the parameters it lets change, the
 // checks as a live checklist and the verdict at the end. Every check is evaluated by the
-// core (`Session::exercise`, in each frame's read; `rtnav::system::ExerciseWatch`) from the facts and samples
-// of the run, so `rtnav check` gives the same verdict; this panel only shows them.
+// core (`Session::exercise_view`, in each frame's read; `rtnav::system::ExerciseWatch`) from the facts and samples
+// of the run, so `rtnav check` gives the same verdict; this panel only shows them, with the
+// clock's pause as the same read says it (never "running" while the clock stands still).
+// Restart (Shift+R) starts the scenario again as loaded, with the parameters as they are,
+// the clock running and the checklist cleared (`Session::restart`).
 import { el, setText } from '../dom.js';
 import { t, num, has } from '../i18n.js';
 
@@ -35,10 +38,40 @@ export function createExercisePanel(root, app) {
   const list = el('ul', { class: 'exercise-checks', 'aria-live': 'polite' });
   const verdict = el('p', { class: 'exercise-verdict', role: 'status' });
   const title = el('strong', {}, t('exercise.title'));
-  root.replaceChildren(el('div', { class: 'exercise-head' }, title, ' ', task), allowed, list, verdict);
+  const restartButton = el('button', {
+    type: 'button', id: 'exercise-restart', class: 'secondary', title: t('exercise.restart.title'),
+    'aria-keyshortcuts': 'Shift+R', onclick: () => restart(),
+  }, t('exercise.restart'));
+  root.replaceChildren(el('div', { class: 'exercise-head' }, title, ' ', task), allowed, list,
+    el('div', { class: 'exercise-foot' }, verdict, restartButton));
   let last = '';
 
-  /** @param {ExerciseStatus} status */
+  /**
+   * Starts the scenario again as loaded, with the parameters as they are now, the clock
+   * running, the checklist cleared: a new system, which every panel reads afresh.
+   */
+  function restart() {
+    const r = app.request(t('exercise.restart'), () => demo.restart(), true);
+    if (!r.ok) return;
+    // Whatever the notices and the log said was about the run before.
+    app.notice.hide();
+    app.emit('loaded');
+    app.log.clear();
+    app.log.update();
+    app.log.page(t('exercise.restarted'), 'info');
+    app.stage.draw();
+  }
+
+  // Shift+R restarts while an exercise is shown (not while typing in a field).
+  window.addEventListener('keydown', (e) => {
+    const target = e.target;
+    if (root.hidden || e.key.toLowerCase() !== 'r' || !e.shiftKey || e.ctrlKey || e.metaKey || e.altKey) return;
+    if (target instanceof HTMLInputElement || target instanceof HTMLSelectElement || target instanceof HTMLTextAreaElement) return;
+    e.preventDefault();
+    restart();
+  });
+
+  /** @param {ExerciseView} status */
   function scenarioTask(status) {
     const s = demo.scenario();
     const key = `scenario.${s?.name}.task`;
@@ -46,7 +79,7 @@ export function createExercisePanel(root, app) {
     return text === key ? status.task : text;
   }
 
-  /** @param {ExerciseStatus | null} status */
+  /** @param {ExerciseView | null} status */
   function show(status) {
     root.hidden = !status;
     if (!status) return;
@@ -66,14 +99,19 @@ export function createExercisePanel(root, app) {
     el('span', { class: 'exercise-measured' }, measuredText(c)),
     el('span', { class: 'visually-hidden' }, t(`exercise.state.${c.state}`)))));
     verdict.dataset.verdict = status.verdict;
-    setText(verdict, status.ended_after === null
-      ? t(`exercise.verdict.${status.verdict}`)
-      : t(`exercise.verdict.${status.verdict}_after`, { s: num(status.ended_after, 1) }));
+    // Waiting or running with the clock paused: the drive goes on only when it runs.
+    const stands = status.paused && (status.verdict === 'waiting' || status.verdict === 'running');
+    verdict.dataset.paused = String(stands);
+    setText(verdict, stands
+      ? t(`exercise.verdict.${status.verdict}_paused`)
+      : status.ended_after === null
+        ? t(`exercise.verdict.${status.verdict}`)
+        : t(`exercise.verdict.${status.verdict}_after`, { s: num(status.ended_after, 1) }));
   }
 
   /**
    * Shows the exercise as the frame read it, when it changed.
-   * @param {ExerciseStatus | null} status
+   * @param {ExerciseView | null} status
    */
   function update(status) {
     const key = JSON.stringify(status);
@@ -83,5 +121,5 @@ export function createExercisePanel(root, app) {
   }
 
   app.on('loaded', () => update(demo.exercise()));
-  return { update };
+  return { update, restart };
 }
