@@ -1,6 +1,6 @@
 // End-to-end: axe-core (Deque's accessibility rules, through @axe-core/playwright) finds no
-// violation of the WCAG 2.1 A and AA rules on any tab of the page, in English and in
-// Japanese, at a laptop's, a tablet's and a phone's size.
+// violation of the WCAG 2.1 A and AA rules on any tab of the page, nor with the keyboard guide
+// open, in English and in Japanese, at a laptop's, a tablet's and a phone's size.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { AxeBuilder } from '@axe-core/playwright';
@@ -32,6 +32,13 @@ for (const size of SIZES) {
           const { violations } = await new AxeBuilder({ page }).withTags(TAGS).analyze();
           if (violations.length) found[`${lang} ${tab}`] = described(violations);
         }
+        // The keyboard guide, open over the page.
+        await page.click('#keys-open');
+        await page.waitForSelector('#keys[open]');
+        const { violations } = await new AxeBuilder({ page }).withTags(TAGS).analyze();
+        if (violations.length) found[`${lang} keyboard guide`] = described(violations);
+        await page.keyboard.press('Escape');
+        await page.waitForSelector('#keys:not([open])', { state: 'attached' });
         assert.deepEqual(problems, []);
         await page.close();
       }

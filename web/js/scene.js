@@ -1,7 +1,7 @@
 // @ts-check
 // The scene in words, for a screen reader: the map (its name and size), the robot's pose, the
 // goal, the route's length and the status — what the canvas shows, said from the frame the page
-// reads each frame (`Session::frame`) and the map and route the core holds. The description is
+// reads each frame (`Session::frame`: the telemetry, GlobalPathPlanning's route) and the map. The description is
 // the map's `aria-describedby` and a paragraph a screen reader reaches by reading on; it is
 // written only when its words change. The status is said again in a polite live region only
 // when the status itself changes (its kind, or what it names), not when a number in it moves:
@@ -19,8 +19,6 @@ export function createScene(description, status, app) {
   const { demo } = app;
   /** @type {MapView | null} */
   let map = null;
-  /** The route's length [m] and what it was measured for (the plans made, the map's key). */
-  let route = { key: '', length: /** @type {number | null} */ (null) };
   let spokenStatus = '';
 
   app.on('loaded', () => {
@@ -28,24 +26,13 @@ export function createScene(description, status, app) {
   });
 
   /**
-   * GlobalPathPlanning's route, measured along its cells, read again only after a new plan or
-   * a change of the map.
-   * @param {TelemetryView} v
+   * GlobalPathPlanning's route's length [m], as the component says it (its activity in the
+   * frame: `route`), or null without a route.
+   * @param {ComponentView[]} components
    */
-  function routeLength(v) {
-    const key = `${v.global_plans} ${map?.key ?? ''} ${v.goal ? `${v.goal.x},${v.goal.y}` : ''}`;
-    if (key === route.key) return route.length;
-    const cells = demo.plan().global_path;
-    let length = null;
-    if (map && cells.length > 1) {
-      length = 0;
-      for (let i = 1; i < cells.length; i++) {
-        length += Math.hypot(cells[i][0] - cells[i - 1][0], cells[i][1] - cells[i - 1][1]);
-      }
-      length *= map.grid_size;
-    }
-    route = { key, length };
-    return length;
+  function routeLength(components) {
+    for (const c of components) if (c.status.kind === 'route') return c.status.length;
+    return null;
   }
 
   /** @param {PoseView} p */
@@ -64,7 +51,8 @@ export function createScene(description, status, app) {
       const parts = [];
       if (map) {
         parts.push(t('scene.map', {
-          name: map.name,
+          // The file's name, without its folders.
+          name: map.name.split(/[\\/]/).pop() ?? map.name,
           w: fixed(map.width * map.grid_size, 1),
           h: fixed(map.height * map.grid_size, 1),
           cw: map.width,
@@ -83,7 +71,7 @@ export function createScene(description, status, app) {
       } else {
         parts.push(t('scene.goal.none'));
       }
-      const length = routeLength(v);
+      const length = routeLength(frame.components);
       parts.push(length === null ? t('scene.route.none') : t('scene.route', { length: fixed(length, 1) }));
       const line = statusLine(v);
       parts.push(t('scene.status', { status: line }));

@@ -536,6 +536,8 @@ export function createStage(wrap, view, overlay, hint, said, app) {
       const step = e.shiftKey ? 1 : map.grid_size;
       moveCursor(arrow[0] * step, arrow[1] * step);
       sayCursor();
+      // The cell under the cursor, as under the mouse (the Inspector).
+      app.emit('hover', demo.world_to_cell(cursor.x, cursor.y) ?? null);
     } else if ((e.key === '[' || e.key === ']') && (tool === 'goal' || tool === 'start')) {
       const turned = cursor.theta_deg + (e.key === '[' ? TURN_DEG : -TURN_DEG);
       cursor.theta_deg = ((((turned + 180) % 360) + 360) % 360) - 180;
@@ -558,12 +560,15 @@ export function createStage(wrap, view, overlay, hint, said, app) {
 
   // ------------------------------------------------------------------ the overlay
 
-  /** @param {Px} from @param {Px} to @param {string} colour */
-  function arrow(from, to, colour) {
+  /**
+   * An arrow from `from` to `to`; `size` is its head's (canvas pixels; by default from the canvas's width).
+   * @param {Px} from @param {Px} to @param {string} colour @param {number} [size]
+   */
+  function arrow(from, to, colour, size) {
     const [x0, y0] = from;
     const [x1, y1] = to;
     const a = Math.atan2(y1 - y0, x1 - x0);
-    const s = Math.max(8, overlay.width / 120);
+    const s = size ?? Math.max(8, overlay.width / 120);
     octx.strokeStyle = colour;
     octx.fillStyle = colour;
     octx.lineWidth = Math.max(2, s / 3);
@@ -637,12 +642,13 @@ export function createStage(wrap, view, overlay, hint, said, app) {
     if (!w) return;
     /** @type {Px} */
     const p = [w[0], w[1]];
-    if (tool === 'goal' || tool === 'start') poseArrow(at, COLOURS[tool]);
-    else if (tool === 'paint' || tool === 'erase') brushOutline(p, tool);
-    const r = Math.max(10, overlay.width / 60);
+    if (tool === 'paint' || tool === 'erase') brushOutline(p, tool);
+    // Sized in CSS pixels (the canvas may have two pixels to each).
+    const k = overlay.width / Math.max(1, overlay.getBoundingClientRect().width);
+    const r = 12 * k;
     for (const [colour, width] of [['#ffffff', 5], ['#1d2330', 2]]) {
       octx.strokeStyle = /** @type {string} */ (colour);
-      octx.lineWidth = /** @type {number} */ (width);
+      octx.lineWidth = /** @type {number} */ (width) * k;
       octx.beginPath();
       octx.arc(p[0], p[1], r, 0, 2 * Math.PI);
       octx.moveTo(p[0] - 1.8 * r, p[1]);
@@ -654,6 +660,11 @@ export function createStage(wrap, view, overlay, hint, said, app) {
       octx.moveTo(p[0], p[1] + 0.5 * r);
       octx.lineTo(p[0], p[1] + 1.8 * r);
       octx.stroke();
+    }
+    if (tool === 'goal' || tool === 'start') {
+      // The heading, reaching well past the cross hairs.
+      const h = (at.theta_deg * Math.PI) / 180;
+      arrow(p, [p[0] + 3.4 * r * Math.cos(h), p[1] - 3.4 * r * Math.sin(h)], COLOURS[tool], 10 * k);
     }
   }
 
