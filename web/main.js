@@ -8,6 +8,8 @@ import { createCrashGuard } from './js/crash.js';
 import { startLoop } from './js/loop.js';
 import { createNotice } from './js/notice.js';
 import { createStage } from './js/stage.js';
+import { createScene } from './js/scene.js';
+import { createKeyGuide } from './js/keys.js';
 import { createScenarios } from './js/scenarios.js';
 import { createToolbar } from './js/panels/toolbar.js';
 import { createRtcPanel } from './js/panels/rtc.js';
@@ -117,10 +119,13 @@ async function boot() {
       return r;
     },
   });
-  app.notice = createNotice($('notice'), $('notice-text'), $('notice-close'));
+  app.notice = createNotice($('notice'), $('notice-text'), $('notice-close'), $('notice-said'));
   app.log = createEventLog($('log-panel'), app);
-  app.stage = createStage($('canvas-wrap'), $('view'), $('overlay'), $('tool-hint'), app);
+  app.stage = createStage($('canvas-wrap'), /** @type {HTMLCanvasElement} */ ($('view')),
+    /** @type {HTMLCanvasElement} */ ($('overlay')), $('tool-hint'), $('map-cursor'), app);
+  const scene = createScene($('scene-description'), $('scene-status'), app);
   const toolbar = createToolbar($('toolbar'), $('clock-controls'), $('map-controls'), app);
+  createKeyGuide(/** @type {HTMLButtonElement} */ ($('keys-open')));
   const systemBar = createSystemBar($('system-group'), app);
   const rtc = createRtcPanel($('rtc-panel'), app);
   const system = createSystemPanel($('system-panel'), app);
@@ -155,6 +160,8 @@ async function boot() {
   );
   app.scenarios = scenarios;
   const timeline = createTimeline($('timeline'), app);
+  // The timeline's time changes every frame: shown, not spoken (an <output> is a live region).
+  $('tl-time').setAttribute('aria-live', 'off');
   const compare = createCompare($('params-panel'), $('compare-view'), app);
   const simTime = $('sim-time');
 
@@ -198,6 +205,7 @@ async function boot() {
     rtc.update(frame.components);
     app.log.update(frame.events);
     telemetry.update(frame.telemetry);
+    scene.update(frame);
     timeline.update();
     toolbar.update(clock);
     exercise.update(frame.exercise);

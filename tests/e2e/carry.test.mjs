@@ -78,7 +78,7 @@ test('switching the language carries the run: goal, edits, parameters, time, pau
   assert.equal(await page.getAttribute('#dir-backward', 'aria-pressed'), 'true');
   assert.equal(await page.getAttribute('#tab-params', 'aria-selected'), 'true');
   assert.equal(await page.inputValue('#param-DriveControl-MaxVelocity'), '0.4');
-  assert.equal(await page.textContent('#activate-all'), 'すべて活性化');
+  assert.equal(await page.textContent('#activate-all'), 'すべてアクティブ化');
   assert.doesNotMatch(page.url(), /share=/, 'the run is carried, not a share link');
 
   // It goes on from there; and back to English, still the same run.

@@ -159,7 +159,7 @@ test('the choice is kept in local storage and goes into the share link', { timeo
   // Back to Japanese; a share link carries it.
   await Promise.all([page.waitForNavigation(), page.selectOption('#language', 'ja')]);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 60_000 });
-  assert.equal(await page.textContent('#activate-all'), 'すべて活性化');
+  assert.equal(await page.textContent('#activate-all'), 'すべてアクティブ化');
   await page.click('#share-copy');
   await page.waitForSelector('#share-link:not([hidden])', WAIT);
   const link = await page.inputValue('#share-link');
@@ -169,5 +169,5 @@ test('the choice is kept in local storage and goes into the share link', { timeo
   const en = await browser({ locale: 'en-GB' });
   const { page: other } = await openPage(en.context, `?${link.split('?')[1]}`);
   assert.equal(await other.evaluate(() => document.documentElement.lang), 'ja');
-  assert.equal(await other.textContent('#activate-all'), 'すべて活性化');
+  assert.equal(await other.textContent('#activate-all'), 'すべてアクティブ化');
 });

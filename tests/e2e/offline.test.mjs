@@ -95,7 +95,7 @@ test('offline after one visit: a reload opens the page and the last scenario; sc
     // The other language is the same page with another address: also kept.
     await page.selectOption('#language', 'ja');
     await page.waitForFunction(() => document.documentElement.lang === 'ja' && document.body.dataset.ready === 'true', null, { timeout: 60_000 });
-    assert.equal(await page.textContent('#activate-all'), 'すべて活性化');
+    assert.equal(await page.textContent('#activate-all'), 'すべてアクティブ化');
   } finally {
     await browser.context.setOffline(false);
   }

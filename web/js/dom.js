@@ -21,12 +21,17 @@ export function el(tag, attrs = {}, ...children) {
   return node;
 }
 
-// Black or white text, whichever reads better on `#rrggbb`.
+// Black or white text, whichever has the higher contrast on `#rrggbb` (WCAG's relative
+// luminance: black wins from 0.179 up, where both ratios are equal).
 /** @param {string} hex */
 export function textOn(hex) {
   const n = parseInt(hex.slice(1), 16);
-  const [r, g, b] = [(n >> 16) & 255, (n >> 8) & 255, n & 255];
-  return 0.299 * r + 0.587 * g + 0.114 * b > 150 ? '#000000' : '#ffffff';
+  const linear = (/** @type {number} */ c) => {
+    const s = c / 255;
+    return s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
+  };
+  const [r, g, b] = [(n >> 16) & 255, (n >> 8) & 255, n & 255].map(linear);
+  return 0.2126 * r + 0.7152 * g + 0.0722 * b > 0.179 ? '#000000' : '#ffffff';
 }
 
 // Sets text only when it changed (panels update every frame).

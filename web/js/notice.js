@@ -1,3 +1,4 @@
+// @ts-check
 // The notice over the canvas: what just happened — a refused goal, a bad map file, a loaded
 // scenario, or a state of the system (a component in Error, a bump, a planning failure,
 // arrival).
@@ -11,7 +12,10 @@
 // fewest). It never takes more than a quarter of the map: a notice that would is made compact
 // (smaller, at most three lines; its whole text stays its title and what a screen reader
 // reads) and, if it must, narrower. Clicks pass through it to the map (its text is no
-// control); only its button takes them (style.css: `pointer-events`).
+// control); only its button takes them (style.css: `pointer-events`). A screen reader hears a
+// notice once, when it is shown, from a polite live region beside the map (`said`); the box
+// itself is no live region, so placing it again each frame says nothing.
+/** @type {Record<string, number>} */
 const FADE_MS = { info: 5000, success: 5000, warn: 12000, error: 20000 };
 /** Room kept around the robot's body and the goal, CSS pixels. */
 const CLEARANCE_PX = 6;
@@ -20,21 +24,37 @@ const TOP_REM = 2.6;
 const BOTTOM_REM = 2.3;
 /** Its offset from the map's side when it keeps to the left or right, rem (`data-align`). */
 const EDGE_REM = 0.45;
-/** Where it may go, in order of preference: [top or bottom, centre or side]; then heights in between. */
+/**
+ * Where it may go, in order of preference: [top or bottom, centre or side]; then heights in between.
+ * @type {Array<['top' | 'bottom', 'center' | 'left' | 'right']>}
+ */
 const PLACES = [['top', 'center'], ['bottom', 'center'], ['top', 'left'], ['top', 'right'], ['bottom', 'left'], ['bottom', 'right']];
+/** @type {Array<'center' | 'left' | 'right'>} */
 const ALIGNS = ['center', 'left', 'right'];
 /** The step between the heights in between, CSS pixels. */
 const STEP_PX = 8;
 /** The most of the map's area a notice may cover. */
 const MOST_OF_MAP = 0.25;
 
+/** @param {ClientBox} a @param {ClientBox} b */
 const overlaps = (a, b) =>
   a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
 
-export function createNotice(box, text, close) {
-  let timer = 0;
+/**
+ * @param {HTMLElement} box the notice
+ * @param {HTMLElement} text its words
+ * @param {HTMLElement} close its button
+ * @param {HTMLElement} said where a screen reader hears it (a polite live region)
+ */
+export function createNotice(box, text, close, said) {
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let timer;
+  /** @type {(() => boolean) | null} */
   let until = null;
-  /** What to keep clear (a function giving client boxes: the robot, the goal), from the last frame. */
+  /**
+   * What to keep clear (a function giving client boxes: the robot, the goal), from the last frame.
+   * @type {() => Array<ClientBox | null>}
+   */
   let keepClear = () => [];
   const hide = () => {
     box.hidden = true;
@@ -49,6 +69,7 @@ export function createNotice(box, text, close) {
    * larger, and narrower if it still is.
    */
   let fitted = '';
+  /** @param {DOMRect} wrap */
   function fit(wrap) {
     // Measured again only when the text or the map's size changed.
     const key = `${Math.round(wrap.width)}×${Math.round(wrap.height)} ${text.textContent}`;
@@ -71,13 +92,16 @@ export function createNotice(box, text, close) {
    * `EDGE_REM` from a side: `data-place`, `data-align` in the style), else the first height in
    * between (`data-place="middle"`, from the top down) and alignment; where every place
    * covers one, the first place that covers fewest.
+   * @param {Array<ClientBox | null>} boxes
    */
-  function place(clear) {
+  function place(boxes) {
+    const clear = /** @type {ClientBox[]} */ (boxes.filter(Boolean));
     if (box.hidden) return;
-    const wrap = box.offsetParent?.getBoundingClientRect();
+    const wrap = /** @type {HTMLElement | null} */ (box.offsetParent)?.getBoundingClientRect();
     if (!wrap) return;
-    if (box.title !== text.textContent) box.title = text.textContent;
+    if (box.title !== text.textContent) box.title = text.textContent ?? '';
     fit(wrap);
+    /** @type {[string, string, number | null]} */
     let best = ['top', 'center', null];
     if (clear.length) {
       const now = { width: box.offsetWidth, height: box.offsetHeight };
@@ -88,10 +112,11 @@ export function createNotice(box, text, close) {
         left: wrap.left + EDGE_REM * rem,
         right: wrap.right - EDGE_REM * rem - now.width,
       };
-      const under = (top, h) => clear.filter((c) => overlaps(
+      const under = (/** @type {number} */ top, /** @type {'center' | 'left' | 'right'} */ h) => clear.filter((c) => overlaps(
         { left: lefts[h], right: lefts[h] + now.width, top, bottom: top + now.height },
         { left: c.left - CLEARANCE_PX, right: c.right + CLEARANCE_PX, top: c.top - CLEARANCE_PX, bottom: c.bottom + CLEARANCE_PX },
       )).length;
+      /** @type {Array<[string, 'center' | 'left' | 'right', number | null, number]>} */
       const candidates = PLACES.map(([v, h]) => [v, h, null, tops[v]]);
       for (let y = tops.top + STEP_PX; y < tops.bottom; y += STEP_PX) {
         for (const h of ALIGNS) candidates.push(['middle', h, y - wrap.top, y]);
@@ -114,8 +139,14 @@ export function createNotice(box, text, close) {
      * Shows `message`; `level` is `info`, `success`, `warn` or `error`. With `until`, the
      * notice is about a state and stays until `until()` is true (or the state is ended).
      */
+    /**
+     * @param {string} message
+     * @param {string} [level]
+     * @param {{ until?: () => boolean }} [options]
+     */
     show(message, level = 'info', { until: ends } = {}) {
       text.textContent = message;
+      said.textContent = message;
       box.dataset.level = level;
       box.hidden = false;
       clearTimeout(timer);
@@ -134,6 +165,7 @@ export function createNotice(box, text, close) {
      * Every frame: hides a notice whose state has ended; keeps it off the robot and the goal
      * (`clear()` gives their client boxes; it is asked only while a notice is up).
      */
+    /** @param {() => Array<ClientBox | null>} clear */
     update(clear) {
       keepClear = clear;
       if (box.hidden) return;

@@ -246,6 +246,16 @@ const page = sayer(t, has);
 export const { reasonText, warningText, inputText, eventText, statusText, activityText } = page;
 
 /**
+ * The status line (the telemetry's, and the scene's words): the robot's status as a sentence,
+ * and whether the clock is paused.
+ */
+export function statusLine(v) {
+  const said = statusText(v.status_kind, v.status_fields);
+  const line = said.charAt(0).toUpperCase() + said.slice(1);
+  return v.paused ? line + t('telemetry.paused') : line;
+}
+
+/**
  * A refusal (an `Error` thrown by the wasm layer, or a message) in the page's language: said
  * from its `detail` (`{area, kind, fields}`) through `error.<Area>.<Kind>`; in English, and
  * where there is no detail or no words for it, the core's own `message`.

@@ -1,4 +1,5 @@
-// The stage: the canvas that shows the core's frame, and the mouse (or finger) on it.
+// @ts-check
+// The stage: the canvas that shows the core's frame, and the mouse, finger or keyboard on it.
 //
 // The frame is drawn by the core's tiny-skia renderer into Rust memory; it reaches the canvas
 // without a copy: a Uint8ClampedArray view over wasm memory at `frame_ptr()` → ImageData →
@@ -12,8 +13,16 @@
 // right mouse button, or two fingers drag the picture; Fit shows the whole map again.
 // A paint stroke is one MapUpdate, sent when the stroke ends: the cells under the
 // brush are gathered while it moves and previewed on the overlay.
+//
+// The keyboard: the overlay takes focus (it is the map's one control, `role="application"`,
+// described by the scene's words, js/scene.js). With the Goal or Start tool the arrows move a
+// cursor (a cell, a metre with Shift), `[` and `]` turn its heading, Enter places it; with
+// Obstacle or Erase, Enter or Space paints the brush at the cursor; with Pan the arrows move
+// the view. Each goes through the same requests as the mouse (`setGoal`, `setStart`, one
+// MapUpdate, `pan_by`); where the cursor is is said in a polite live region, once a key.
 import { t, fixed } from './i18n.js';
 
+/** @type {Record<string, string>} */
 const TOOL_HINTS = {
   goal: t('hint.goal'),
   start: t('hint.start'),
@@ -21,6 +30,7 @@ const TOOL_HINTS = {
   erase: t('hint.erase'),
   pan: t('hint.pan'),
 };
+/** @type {Record<string, string>} */
 const COLOURS = { goal: '#e8590c', start: '#1c7ed6', paint: '#212529', erase: '#f8f9fa' };
 /** Zoom per wheel pixel (a notch of 100 px zooms about 1.16×). */
 const WHEEL_ZOOM = 0.0015;
@@ -29,24 +39,57 @@ const BUTTON_ZOOM = 1.5;
 /** A drag shorter than this (canvas pixels) keeps the current heading. */
 const MIN_DRAG_PX = 8;
 
+/** The heading's step for `[` and `]` [deg]. */
+const TURN_DEG = 15;
+/** The view's step for an arrow in the Pan tool, as a share of the canvas (Shift: a larger one). */
+const PAN_SHARE = 0.1;
+const PAN_SHARE_SHIFT = 0.3;
+/** How close to the canvas's edge the cursor may come before the view follows it, canvas pixels. */
+const CURSOR_MARGIN_PX = 24;
+
+/** @param {number} rad */
 const deg = (rad) => (rad * 180) / Math.PI;
+/** @param {number} v */
 const round2 = (v) => Math.round(v * 100) / 100;
 
-export function createStage(wrap, view, overlay, hint, app) {
+/** A point on the canvas [px]. @typedef {[number, number]} Px */
+/**
+ * What a pointer is doing: panning, or a tool's drag from `p0` (world point `w0`) to `p`.
+ * @typedef {{ tool: string, p0: Px, p: Px, w0?: Px }} Drag
+ */
+
+/**
+ * @param {HTMLElement} wrap the canvases' box
+ * @param {HTMLCanvasElement} view the core's frame
+ * @param {HTMLCanvasElement} overlay what the pointer and the keyboard do, above it (focusable)
+ * @param {HTMLElement} hint the tool's hint
+ * @param {HTMLElement} said where the keyboard's cursor is said (a polite live region)
+ * @param {App} app
+ */
+export function createStage(wrap, view, overlay, hint, said, app) {
   const { demo } = app;
-  const ctx = view.getContext('2d', { alpha: false });
-  const octx = overlay.getContext('2d');
+  const ctx = /** @type {CanvasRenderingContext2D} */ (view.getContext('2d', { alpha: false }));
+  const octx = /** @type {CanvasRenderingContext2D} */ (overlay.getContext('2d'));
+  /** @type {ImageData | null} */
   let image = null;
+  /** @type {ArrayBuffer | null} */
   let buffer = null;
   let ptr = 0;
   let len = 0;
   let drawn = false;
   let blitAgain = true;
+  /** @type {[number, number] | null} */
   let fixedSize = null;
+  /** @type {MapView | null} */
   let map = null;
+  /** @type {Px | null} */
   let hover = null;
+  /** @type {Drag | null} */
   let drag = null;
+  /** The cells of the stroke being painted, by "x,y". @type {Map<string, [number, number]>} */
   const pending = new Map();
+  /** The keyboard's cursor (world metres, degrees); null until the map first takes focus. @type {PoseView | null} */
+  let cursor = null;
 
   // ------------------------------------------------------------------ size and blit
 
@@ -113,14 +156,17 @@ export function createStage(wrap, view, overlay, hint, app) {
   // What a request needs to know now (after the requests since the last frame).
   const driving = () => demo.telemetry().driving;
   const plan = () => demo.plan();
+  /** @param {PoseView} p */
   const fmt = (p) => `(${fixed(p.x, 2)} m, ${fixed(p.y, 2)} m, ${fixed(p.theta_deg, 0)}°)`;
 
+  /** @param {string} what @param {string} error @param {string} kept */
   function refused(what, error, kept) {
     app.notice.show(t('refused.kept', { what, error, kept }), 'error');
     app.log.page(t('refused', { what, error }), 'warn');
   }
 
   /** A new goal: from the robot while it drives, else from its start (or a waiting start). */
+  /** @param {PoseView} goal */
   function setGoal(goal) {
     const ps = app.ui.pendingStart;
     const r = ps && !driving()
@@ -137,6 +183,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   }
 
   /** Places the robot (SetPosition with the current goal); without a goal, waits for one. */
+  /** @param {PoseView} start */
   function setStart(start) {
     if (driving()) {
       app.notice.show(t('stage.driving'), 'warn');
@@ -182,6 +229,8 @@ export function createStage(wrap, view, overlay, hint, app) {
    * The cells the brush covers with its centre at world point `(wx, wy)`: in cells, the
    * n×n cells around the cell under it; in metres, the cells whose centre lies inside the
    * square of that side (at least the cell under it) — the core's (`Session::brush_cells`).
+   * @param {number} wx
+   * @param {number} wy
    */
   function brushCells(wx, wy) {
     const { size, unit } = app.ui.brush;
@@ -199,7 +248,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     return demo.pixels_per_metre() * (unit === 'm' ? size : size * map.grid_size);
   }
 
-  /** The cells under the brush from `a` to `b` (canvas pixels), every half cell or brush. */
+  /** The cells under the brush from `a` to `b` (canvas pixels), every half cell or brush. @param {Px} a @param {Px} b */
   function paintSegment(a, b) {
     if (!map) return;
     const step = Math.max(1, Math.min(demo.pixels_per_metre() * map.grid_size, brushSide()) / 2);
@@ -212,7 +261,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     }
   }
 
-  /** Sends the stroke's cells as one MapUpdate (the core sends only what changes). */
+  /** Sends the stroke's cells as one MapUpdate (the core sends only what changes). @param {string} tool */
   function sendStroke(tool) {
     if (pending.size === 0) return;
     const cells = [...pending.values()];
@@ -227,7 +276,11 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   // ------------------------------------------------------------------ the view
 
-  /** Zooms by `factor` about canvas pixel `p` (the middle of the canvas without one). */
+  /**
+   * Zooms by `factor` about canvas pixel `p` (the middle of the canvas without one).
+   * @param {number} factor
+   * @param {Px} [p]
+   */
   function zoomAt(factor, p = [overlay.width / 2, overlay.height / 2]) {
     if (!map) return;
     app.attempt(() => demo.zoom_at(p[0], p[1], factor));
@@ -235,6 +288,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     drawOverlay();
   }
 
+  /** @param {number} dx @param {number} dy canvas pixels */
   function panBy(dx, dy) {
     if (!map) return;
     app.attempt(() => demo.pan_by(dx, dy));
@@ -257,11 +311,12 @@ export function createStage(wrap, view, overlay, hint, app) {
   }, { passive: false });
   overlay.addEventListener('contextmenu', (e) => e.preventDefault());
 
-  /** Touch pointers down on the map, by id: their last canvas position. */
+  /** Touch pointers down on the map, by id: their last canvas position. @type {Map<number, Px>} */
   const touches = new Map();
+  /** @type {{ d0: number, zoom0: number, anchor: Px | null } | null} */
   let pinch = null;
 
-  /** The two fingers' distance and middle (canvas pixels). */
+  /** The two fingers' distance and middle (canvas pixels). @returns {{ d: number, mid: Px }} */
   function pinchState() {
     const [a, b] = [...touches.values()];
     return { d: Math.hypot(b[0] - a[0], b[1] - a[1]), mid: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2] };
@@ -280,7 +335,7 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   function movePinch() {
     const s = pinchState();
-    if (!pinch.anchor || !(pinch.d0 > 0) || !(s.d > 0)) return;
+    if (!pinch || !pinch.anchor || !(pinch.d0 > 0) || !(s.d > 0)) return;
     const want = (pinch.zoom0 * s.d) / pinch.d0;
     zoomAt(want / demo.zoom(), s.mid);
     const at = demo.world_to_pixel(pinch.anchor[0], pinch.anchor[1]);
@@ -289,6 +344,7 @@ export function createStage(wrap, view, overlay, hint, app) {
 
   // ------------------------------------------------------------------ the mouse
 
+  /** @param {MouseEvent} e @returns {Px} */
   function toCanvas(e) {
     const r = overlay.getBoundingClientRect();
     return [((e.clientX - r.left) * overlay.width) / r.width, ((e.clientY - r.top) * overlay.height) / r.height];
@@ -354,6 +410,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     drawOverlay();
   });
 
+  /** @param {PointerEvent} [e] */
   function finish(e) {
     if (e && e.pointerType === 'touch') {
       touches.delete(e.pointerId);
@@ -374,7 +431,7 @@ export function createStage(wrap, view, overlay, hint, app) {
       }
     } else if (d.tool === 'paint' || d.tool === 'erase') {
       sendStroke(d.tool);
-    } else {
+    } else if (d.w0) {
       const dx = d.p[0] - d.p0[0];
       const dy = d.p[1] - d.p0[1];
       let heading;
@@ -401,13 +458,117 @@ export function createStage(wrap, view, overlay, hint, app) {
     drawOverlay();
   });
 
+  // ------------------------------------------------------------------ the keyboard
+
+  /** Whether the keyboard's cursor is shown: the map has the keyboard's focus. */
+  const keyboardFocus = () => document.activeElement === overlay && overlay.matches(':focus-visible');
+
+  /** Where the cursor starts: the goal, else the robot, else the map's middle. */
+  function firstCursor() {
+    const m = /** @type {MapView} */ (map);
+    const tel = app.frame?.telemetry;
+    const at = tel?.goal ?? (tel && (tel.start || tel.driving) ? tel.pose : null);
+    if (at) return { x: round2(at.x), y: round2(at.y), theta_deg: Math.round(at.theta_deg) };
+    return {
+      x: round2(m.origin[0] + (m.width * m.grid_size) / 2),
+      y: round2(m.origin[1] + (m.height * m.grid_size) / 2),
+      theta_deg: 0,
+    };
+  }
+
+  /** Says where the cursor is (the live region beside the map). */
+  function sayCursor() {
+    if (!cursor) return;
+    said.textContent = t('stage.cursor', {
+      x: fixed(cursor.x, 2), y: fixed(cursor.y, 2), theta: fixed(cursor.theta_deg, 0),
+    });
+  }
+
+  /**
+   * Moves the cursor by (`dx`, `dy`) metres, kept on the map; the view follows it when it
+   * comes near the canvas's edge.
+   * @param {number} dx
+   * @param {number} dy
+   */
+  function moveCursor(dx, dy) {
+    if (!map || !cursor) return;
+    const [ox, oy] = map.origin;
+    const half = map.grid_size / 2;
+    const clamp = (/** @type {number} */ v, /** @type {number} */ lo, /** @type {number} */ hi) => Math.min(Math.max(v, lo), hi);
+    cursor.x = round2(clamp(cursor.x + dx, ox + half, ox + map.width * map.grid_size - half));
+    cursor.y = round2(clamp(cursor.y + dy, oy + half, oy + map.height * map.grid_size - half));
+    const p = demo.world_to_pixel(cursor.x, cursor.y);
+    if (p) {
+      const m = CURSOR_MARGIN_PX;
+      const px = p[0] < m ? m - p[0] : p[0] > overlay.width - m ? overlay.width - m - p[0] : 0;
+      const py = p[1] < m ? m - p[1] : p[1] > overlay.height - m ? overlay.height - m - p[1] : 0;
+      if (px || py) panBy(px, py);
+    }
+  }
+
+  /** Paints (Obstacle) or erases the brush's cells at the cursor: one MapUpdate. @param {string} tool */
+  function paintAtCursor(tool) {
+    if (!cursor) return;
+    pending.clear();
+    for (const [x, y] of brushCells(cursor.x, cursor.y)) pending.set(`${x},${y}`, [x, y]);
+    sendStroke(tool);
+  }
+
+  overlay.addEventListener('focus', () => {
+    if (map && !cursor) cursor = firstCursor();
+    drawOverlay();
+  });
+  overlay.addEventListener('blur', drawOverlay);
+
+  overlay.addEventListener('keydown', (e) => {
+    if (!map || e.ctrlKey || e.metaKey || e.altKey) return;
+    if (!cursor) cursor = firstCursor();
+    const tool = app.ui.tool;
+    /** @type {Record<string, [number, number]>} */
+    const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
+    const arrow = ARROWS[e.key];
+    let done = true;
+    if (arrow && tool === 'pan') {
+      // The view moves the arrow's way: the picture the other way.
+      const share = e.shiftKey ? PAN_SHARE_SHIFT : PAN_SHARE;
+      panBy(-arrow[0] * share * overlay.width, arrow[1] * share * overlay.height);
+    } else if (arrow) {
+      const step = e.shiftKey ? 1 : map.grid_size;
+      moveCursor(arrow[0] * step, arrow[1] * step);
+      sayCursor();
+      // The cell under the cursor, as under the mouse (the Inspector).
+      app.emit('hover', demo.world_to_cell(cursor.x, cursor.y) ?? null);
+    } else if ((e.key === '[' || e.key === ']') && (tool === 'goal' || tool === 'start')) {
+      const turned = cursor.theta_deg + (e.key === '[' ? TURN_DEG : -TURN_DEG);
+      cursor.theta_deg = ((((turned + 180) % 360) + 360) % 360) - 180;
+      sayCursor();
+    } else if (e.key === 'Enter' && tool === 'goal') {
+      setGoal({ ...cursor });
+    } else if (e.key === 'Enter' && tool === 'start') {
+      setStart({ ...cursor });
+    } else if ((e.key === 'Enter' || e.key === ' ') && (tool === 'paint' || tool === 'erase')) {
+      paintAtCursor(tool);
+    } else {
+      // Everything else (the tools' letters, Space to pause, zoom) is the page's (toolbar.js).
+      done = false;
+    }
+    if (!done) return;
+    e.preventDefault();
+    e.stopPropagation();
+    drawOverlay();
+  });
+
   // ------------------------------------------------------------------ the overlay
 
-  function arrow(from, to, colour) {
+  /**
+   * An arrow from `from` to `to`; `size` is its head's (canvas pixels; by default from the canvas's width).
+   * @param {Px} from @param {Px} to @param {string} colour @param {number} [size]
+   */
+  function arrow(from, to, colour, size) {
     const [x0, y0] = from;
     const [x1, y1] = to;
     const a = Math.atan2(y1 - y0, x1 - x0);
-    const s = Math.max(8, overlay.width / 120);
+    const s = size ?? Math.max(8, overlay.width / 120);
     octx.strokeStyle = colour;
     octx.fillStyle = colour;
     octx.lineWidth = Math.max(2, s / 3);
@@ -426,6 +587,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     octx.fill();
   }
 
+  /** @param {PoseView} pose @param {string} colour */
   function poseArrow(pose, colour) {
     const p = demo.world_to_pixel(pose.x, pose.y);
     if (!p) return;
@@ -455,13 +617,54 @@ export function createStage(wrap, view, overlay, hint, app) {
         if (a && b) octx.fillRect(a[0], a[1], b[0] - a[0], b[1] - a[1]);
       }
     }
-    if (hover && map && (tool === 'paint' || tool === 'erase')) {
-      const side = brushSide();
-      octx.lineWidth = 2;
-      octx.strokeStyle = tool === 'paint' ? '#c92a2a' : '#495057';
-      octx.setLineDash(tool === 'erase' ? [4, 3] : []);
-      octx.strokeRect(hover[0] - side / 2, hover[1] - side / 2, side, side);
-      octx.setLineDash([]);
+    if (hover && map && (tool === 'paint' || tool === 'erase')) brushOutline(hover, tool);
+    if (map && cursor && keyboardFocus()) drawCursor(cursor, tool);
+  }
+
+  /** The brush's square about canvas point `p`. @param {Px} p @param {string} tool */
+  function brushOutline(p, tool) {
+    const side = brushSide();
+    octx.lineWidth = 2;
+    octx.strokeStyle = tool === 'paint' ? '#c92a2a' : '#495057';
+    octx.setLineDash(tool === 'erase' ? [4, 3] : []);
+    octx.strokeRect(p[0] - side / 2, p[1] - side / 2, side, side);
+    octx.setLineDash([]);
+  }
+
+  /**
+   * The keyboard's cursor: cross hairs in a ring (white under dark, to show on any layer),
+   * with the heading's arrow for Goal and Start, the brush for Obstacle and Erase.
+   * @param {PoseView} at
+   * @param {string} tool
+   */
+  function drawCursor(at, tool) {
+    const w = demo.world_to_pixel(at.x, at.y);
+    if (!w) return;
+    /** @type {Px} */
+    const p = [w[0], w[1]];
+    if (tool === 'paint' || tool === 'erase') brushOutline(p, tool);
+    // Sized in CSS pixels (the canvas may have two pixels to each).
+    const k = overlay.width / Math.max(1, overlay.getBoundingClientRect().width);
+    const r = 12 * k;
+    for (const [colour, width] of [['#ffffff', 5], ['#1d2330', 2]]) {
+      octx.strokeStyle = /** @type {string} */ (colour);
+      octx.lineWidth = /** @type {number} */ (width) * k;
+      octx.beginPath();
+      octx.arc(p[0], p[1], r, 0, 2 * Math.PI);
+      octx.moveTo(p[0] - 1.8 * r, p[1]);
+      octx.lineTo(p[0] - 0.5 * r, p[1]);
+      octx.moveTo(p[0] + 0.5 * r, p[1]);
+      octx.lineTo(p[0] + 1.8 * r, p[1]);
+      octx.moveTo(p[0], p[1] - 1.8 * r);
+      octx.lineTo(p[0], p[1] - 0.5 * r);
+      octx.moveTo(p[0], p[1] + 0.5 * r);
+      octx.lineTo(p[0], p[1] + 1.8 * r);
+      octx.stroke();
+    }
+    if (tool === 'goal' || tool === 'start') {
+      // The heading, reaching well past the cross hairs.
+      const h = (at.theta_deg * Math.PI) / 180;
+      arrow(p, [p[0] + 3.4 * r * Math.cos(h), p[1] - 3.4 * r * Math.sin(h)], COLOURS[tool], 10 * k);
     }
   }
 
@@ -505,8 +708,9 @@ export function createStage(wrap, view, overlay, hint, app) {
   }
 
   /** What a notice over the map must not cover: the robot and the goal (client boxes). */
-  const keepClear = () => [robotBox(), goalBox()].filter(Boolean);
+  const keepClear = () => /** @type {ClientBox[]} */ ([robotBox(), goalBox()].filter(Boolean));
 
+  /** @param {string} tool */
   function setTool(tool) {
     app.ui.tool = tool;
     overlay.dataset.tool = tool;
@@ -519,6 +723,7 @@ export function createStage(wrap, view, overlay, hint, app) {
   app.on('loaded', () => {
     map = demo.map();
     fitHeight();
+    cursor = null;
     app.ui.pendingStart = null;
     drag = null;
     blitAgain = true;
@@ -535,6 +740,7 @@ export function createStage(wrap, view, overlay, hint, app) {
     setGoal,
     setStart,
     resubmitDirection,
+    /** @param {number} w @param {number} h */
     setFixedSize(w, h) {
       fixedSize = w && h ? [w, h] : null;
       fit();

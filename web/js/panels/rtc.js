@@ -8,11 +8,11 @@ import { el, setText, textOn } from '../dom.js';
 import { t } from '../i18n.js';
 import { activityText, reasonText } from '../say.js';
 
-/** @type {Record<string, [string, string]>} */
+/** Each state's request: its name, its label, and its accessible name (which component). @type {Record<string, [string, string, string]>} */
 const ACTIONS = {
-  Inactive: ['activate', t('rtc.activate')],
-  Active: ['deactivate', t('rtc.deactivate')],
-  Error: ['reset', t('rtc.reset')],
+  Inactive: ['activate', t('rtc.activate'), 'rtc.activate.aria'],
+  Active: ['deactivate', t('rtc.deactivate'), 'rtc.deactivate.aria'],
+  Error: ['reset', t('rtc.reset'), 'rtc.reset.aria'],
 };
 const EDITOR = { Inactive: '#0000ff', Active: '#00ff00', Error: '#ff0000' };
 /** The sensor glitch: which component, which InPort, what sample (x, y, z, θ). */
@@ -29,6 +29,11 @@ function paint(badge, state, colour) {
   badge.dataset.state = state;
   badge.style.background = colour;
   badge.style.color = textOn(colour);
+}
+
+/** Sets a control's accessible name when it changed. @param {HTMLElement} e @param {string} name */
+function named(e, name) {
+  if (e.getAttribute('aria-label') !== name) e.setAttribute('aria-label', name);
 }
 
 /**
@@ -59,7 +64,7 @@ export function createRtcPanel(root, app) {
     fault.addEventListener('click', () => request(t('rtc.fault.request', { name: c.name }), () => demo.inject_fault(c.name)));
     let glitch = null;
     if (c.name === GLITCH.component) {
-      glitch = el('button', { type: 'button', class: 'glitch danger', title: GLITCH_TITLE }, t('rtc.glitch'));
+      glitch = el('button', { type: 'button', class: 'glitch danger', title: GLITCH_TITLE, 'aria-label': t('rtc.glitch.aria', { name: c.instance_name }) }, t('rtc.glitch'));
       glitch.addEventListener('click', () => {
         const r = request(t('rtc.glitch'), () => demo.inject_input(GLITCH.component, GLITCH.port, GLITCH.sample()));
         if (r.ok) app.log.page(t('rtc.glitch.log', { port: `${GLITCH.component}.${GLITCH.port}` }), 'warn');
@@ -100,9 +105,13 @@ export function createRtcPanel(root, app) {
         const why = c.state === 'Error' && c.last_error ? t('rtc.reason', { reason: reasonText(c.last_error) }) : '';
         setText(r.reason, why);
         r.reason.hidden = !why;
-        const [action, label] = ACTIONS[c.state] ?? ['activate', t('rtc.activate')];
+        const [action, label, aria] = ACTIONS[c.state] ?? ACTIONS.Inactive;
         r.action.dataset.action = action;
         setText(r.action, label);
+        // The buttons' names say which component ("Activate MotorControl0"), as their
+        // labels in a row do not.
+        named(r.action, t(aria, { name: c.instance_name }));
+        named(r.fault, t(c.fault_pending ? 'rtc.fault.pending.aria' : 'rtc.fault.aria', { name: c.instance_name }));
         r.action.disabled = !(c.state in ACTIONS);
         r.fault.disabled = !(c.state === 'Inactive' || c.state === 'Active') || c.fault_pending;
         setText(r.fault, c.fault_pending ? t('rtc.fault.pending') : t('rtc.fault'));

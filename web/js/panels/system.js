@@ -181,7 +181,7 @@ export function createSystemPanel(root, app) {
 
   // ------------------------------------------------------------------ the frame
 
-  const picture = svg('svg', { class: 'system-svg', role: 'img', 'aria-label': t('system.picture.aria') });
+  const picture = svg('svg', { class: 'system-svg', role: 'group', 'aria-label': t('system.picture.aria') });
   const wrap = el('div', { class: 'system-wrap', id: 'system-diagram' }, picture);
   const tooltip = el('div', { class: 'system-tip', id: 'system-tip', role: 'tooltip', hidden: true });
   wrap.append(tooltip);

@@ -4,7 +4,7 @@
 // end-to-end test reads them).
 import { el, setText } from '../dom.js';
 import { t, fixed } from '../i18n.js';
-import { statusText } from '../say.js';
+import { statusLine } from '../say.js';
 
 const FIELDS = [
   ['status', t('telemetry.status')],
@@ -47,9 +47,7 @@ export function createTelemetry(root, app) {
       set('plans', t('telemetry.plans.value', { global: v.global_plans, local: v.local_plans }));
       // What the core says is true (rtnav::system::Status), not guessed here: said from the
       // catalogue's words for the status's kind, with its fields (which component, why).
-      const said = statusText(v.status_kind, v.status_fields);
-      let status = said.charAt(0).toUpperCase() + said.slice(1);
-      if (v.paused) status += t('telemetry.paused');
+      const status = statusLine(v);
       set('status', status);
       const shown = /** @type {HTMLElement} */ (values.get('status'));
       if (shown.title !== status) shown.title = status;

@@ -178,6 +178,8 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
     el('div', { class: 'group plain-group' }, clear, safe),
     el('span', { class: 'spacer' }),
     layerMenu,
+    // The keyboard guide (js/keys.js opens it; `?` too).
+    el('button', { type: 'button', id: 'keys-open', class: 'plain', title: t('keys.open.title'), 'aria-keyshortcuts': '?' }, t('keys.open')),
   );
   clockRoot.append(pause, step, speed);
 
@@ -185,6 +187,8 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   window.addEventListener('keydown', (e) => {
     const t = e.target;
     if (t instanceof HTMLInputElement || t instanceof HTMLSelectElement || e.ctrlKey || e.metaKey || e.altKey) return;
+    // Not under the keyboard guide (a modal dialog).
+    if (document.querySelector('dialog[open]')) return;
     if (t instanceof HTMLButtonElement && (e.key === ' ' || e.key === 'Enter')) return;
     const tool = TOOLS.find((t) => t[2] === e.key.toLowerCase());
     if (tool) app.emit('tool', tool[0]);
