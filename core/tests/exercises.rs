@@ -1,11 +1,14 @@
 //! Every exercise (`fixtures/scenarios/ex_*.json`) done headlessly as `rtnav check` does it
 //! ([`check_exercise`]): its reference solution (`fixtures/exercises/NAME.solution.conf`, or
 //! timed requests for seed 003's) passes every check, and a wrong one
-//! (`NAME.wrong.conf`, or nothing done) fails — with the check that should fail named.
+//! (`NAME.wrong.conf`, or nothing done) fails — with the check that should fail named; where
+//! the range the lesson calls right has two ends, a wrong answer beyond the other end
+//! (`NAME.wrong_below.conf`, `NAME.wrong_above.conf`) fails too. (Every value of each
+//! parameter: `exercise_sweeps.rs`.)
 
 use rtnav::data::RepoResolver;
 use rtnav::system::{
-    Check, CheckState, ComponentKind, DriveInput, ExerciseStatus, Input, Scenario, Verdict,
+    Check, CheckState, ComponentKind, DriveInput, ExerciseStatus, Input, Scenario, Unit, Verdict,
     check_exercise,
 };
 
@@ -101,7 +104,7 @@ conf_exercise!(
     "ex_parking_posture",
     Check::ApproachHeading { .. }
 );
-conf_exercise!(route_remake, "ex_route_remake", Check::Arrived { .. });
+conf_exercise!(route_remake, "ex_route_remake", Check::MinClearance { .. });
 conf_exercise!(door_dmin, "ex_door_dmin", Check::Arrived { .. });
 conf_exercise!(
     corner_deviation,
@@ -114,7 +117,80 @@ conf_exercise!(
     Check::BackwardDistance { .. }
 );
 conf_exercise!(pd_gains, "ex_pd_gains", Check::MaxOvershoot { .. });
-conf_exercise!(model_offset, "ex_model_offset", Check::Arrived { .. });
+conf_exercise!(
+    model_offset,
+    "ex_model_offset",
+    Check::MaxLocalizationError { .. }
+);
+
+/// A wrong answer beyond the other end of the range fails, with `which` among the checks
+/// failed (and, for a warning, the parameter named).
+fn other_side(name: &str, file: &str, which: fn(&Check) -> bool) -> ExerciseStatus {
+    let status = check(name, Some(&conf(file)), &[]);
+    failed(name, &status, which);
+    assert!(
+        status.checks.iter().all(|c| c.state != CheckState::Open),
+        "{name}: every check decided:\n{status}"
+    );
+    status
+}
+
+#[test]
+fn a_dmin_the_page_warns_about_fails_the_door() {
+    let status = other_side("ex_door_dmin", "ex_door_dmin.wrong_below.conf", |c| {
+        matches!(c, Check::NoWarning)
+    });
+    let rule = status.checks.last().unwrap();
+    assert_eq!(rule.warned, vec!["LocalPathPlanning.dmin".to_owned()]);
+    // The drive itself went well: only the warning fails it.
+    let drive = &status.checks[..status.checks.len() - 1];
+    assert!(
+        drive.iter().all(|c| c.state == CheckState::Passed),
+        "{status}"
+    );
+}
+
+#[test]
+fn a_loose_goal_angle_tolerance_stops_off_the_goal_with_its_heading_measured() {
+    let status = other_side(
+        "ex_parking_posture",
+        "ex_parking_posture.wrong_above.conf",
+        |c| matches!(c, Check::ArrivalHeading { .. }),
+    );
+    // Stopped off the goal: not arrived, and the heading it rests at is the value.
+    let heading = status
+        .checks
+        .iter()
+        .find(|c| matches!(c.check, Check::ArrivalHeading { .. }))
+        .unwrap();
+    let deg = heading.measured.expect("the heading at rest is measured");
+    assert!(deg > 10.0 && deg < 0.4f64.to_degrees(), "{status}");
+    assert_eq!(heading.unit, Some(Unit::Degrees));
+}
+
+#[test]
+fn soft_wheel_gains_reach_the_speed_too_late_with_the_speed_measured() {
+    let status = other_side("ex_pd_gains", "ex_pd_gains.wrong_below.conf", |c| {
+        matches!(c, Check::ReachSpeed { .. })
+    });
+    let reach = &status.checks[0];
+    assert_eq!(reach.unit, Some(Unit::MetresPerSecond));
+    let v = reach.measured.expect("the fastest speed within 0.3 s");
+    assert!(v > 0.3 && v < 0.49, "{status}");
+}
+
+#[test]
+fn an_offset_too_large_leaves_localization_off() {
+    let status = other_side("ex_model_offset", "ex_model_offset.wrong_above.conf", |c| {
+        matches!(c, Check::MaxLocalizationError { .. })
+    });
+    let off = status
+        .checks
+        .iter()
+        .find(|c| matches!(c.check, Check::MaxLocalizationError { .. }))
+        .unwrap();
+    assert!((off.measured.unwrap() - 0.0242).abs() < 1e-3, "{status}");
+}
 
 #[test]
 fn fault_recovery_with_reset_and_activate() {
@@ -170,10 +246,15 @@ fn a_parameter_the_exercise_does_not_name_fails_it() {
     );
     let status = check(name, Some(&text), &[]);
     failed(name, &status, |c| matches!(c, Check::OnlyAllowed));
-    let rule = status.checks.last().unwrap();
+    let rule = &status.checks[status.checks.len() - 2];
+    assert!(matches!(rule.check, Check::OnlyAllowed));
     assert_eq!(rule.changed, vec!["DriveControl.MaxVelocity".to_owned()]);
     // Everything else passed: only the rule failed.
-    let others = &status.checks[..status.checks.len() - 1];
+    let others: Vec<_> = status
+        .checks
+        .iter()
+        .filter(|c| !matches!(c.check, Check::OnlyAllowed))
+        .collect();
     assert!(
         others.iter().all(|c| c.state == CheckState::Passed),
         "{status}"
@@ -213,6 +294,11 @@ fn bad_exercises_are_refused_with_the_reason() {
             "{\n        \"check\": \"no_bump\"\n      }",
             "{\"check\": \"only_allowed\"}",
             "always checked",
+        ),
+        (
+            "{\n        \"check\": \"no_bump\"\n      }",
+            "{\"check\": \"no_warning\"}",
+            "no_warning is always checked",
         ),
     ] {
         assert!(text.contains(from), "{from}");

@@ -501,12 +501,27 @@ fn arena() {
         !text.contains("Change it"),
         "the page offers no grid_size: {text}"
     );
-    // "Raise dmin to 1 m: the route keeps further from the pillars and gets longer"
-    assert!(text.contains("Raise dmin to 1 m"), "{text}");
+    // "Compare with… LocalPathPlanning.dmin 1 m: the ghost keeps further from the pillars,
+    // and the table's min clearance grows from 0.71 m to 1.06 m, while the path is no longer
+    // (34.1 m both)": what the compare view's table shows.
+    assert!(
+        text.contains("Compare with… LocalPathPlanning.dmin 1 m"),
+        "{text}"
+    );
+    assert!(text.contains("from 0.71 m to 1.06 m"), "{text}");
     let plain = drive("arena", &[]);
     arrived(&plain, "as it is");
     let wide = drive("arena", &[("LocalPathPlanning", "dmin", 1.0)]);
     arrived(&wide, "dmin 1");
     assert!(wide.route_clearance > plain.route_clearance);
-    assert!(wide.route_length > plain.route_length);
+    let (a, b) = (plain.report.min_clearance, wide.report.min_clearance);
+    assert!(
+        (a - 0.71).abs() < 0.005 && (b - 1.06).abs() < 0.005,
+        "{a} → {b}"
+    );
+    let (a, b) = (plain.report.path_length, wide.report.path_length);
+    assert!(
+        (a - 34.1).abs() < 0.05 && (b - 34.1).abs() < 0.05,
+        "{a} → {b}"
+    );
 }

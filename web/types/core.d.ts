@@ -122,7 +122,15 @@ at_most_percent: number, } | { "check": "backward_distance",
 /**
  * Metres.
  */
-at_least_m: number, } | { "check": "recovered" } | { "check": "only_allowed" };
+at_least_m: number, } | { "check": "max_localization_error", 
+/**
+ * Metres.
+ */
+at_most_m: number, } | { "check": "max_localization_heading_error", 
+/**
+ * Degrees.
+ */
+at_most_deg: number, } | { "check": "recovered" } | { "check": "only_allowed" } | { "check": "no_warning" };
 
 /**
  * Where a check stands.
@@ -153,7 +161,12 @@ unit: Unit | null,
  * For [`Check::OnlyAllowed`]: the parameters changed that may not be
  * (`Component.Parameter`).
  */
-changed: Array<string>, };
+changed: Array<string>, 
+/**
+ * For [`Check::NoWarning`]: the parameters in use that the page warns about
+ * (`Component.Parameter`).
+ */
+warned: Array<string>, };
 
 /**
  * The clock as the system bar shows it.
@@ -472,7 +485,7 @@ may_change: Array<string>,
  */
 actions: Array<string>, 
 /**
- * Each check, then the rule [`Check::OnlyAllowed`] last.
+ * Each check, then the rules [`Check::OnlyAllowed`] and [`Check::NoWarning`] last.
  */
 checks: Array<CheckStatus>, 
 /**
@@ -1395,7 +1408,7 @@ marks: Array<Mark>, };
 /**
  * The unit of a check's measured value.
  */
-type Unit = "s" | "deg" | "m" | "plans" | "percent";
+type Unit = "s" | "deg" | "m" | "plans" | "percent" | "m/s";
 
 /**
  * How the exercise stands.

@@ -27,13 +27,19 @@
 //!
 //! **Decision (values)**: a check's measured value has one meaning and one unit
 //! ([`Check::unit`]), decided or not: the time of arrival \[s\], the heading error \[°\],
-//! the clearance \[m\], the plans made, the time to reach a speed \[s\] (also when it came
-//! late), the overshoot \[%\], the distance driven backward \[m\].
+//! the clearance \[m\], the plans made, the fastest speed within the time a speed must be
+//! reached in \[m/s\], the overshoot \[%\], the distance driven backward \[m\]. The heading
+//! checks are decided with a value also when the robot came to rest off the goal (spec §7:
+//! it has not arrived, and the status says how far off it stopped): the heading error at
+//! rest, and the one it came to the goal position with, if it did.
 //!
 //! **Decision (the rules)**: besides its checks, an exercise always checks that only the
 //! parameters of `may_change` differ from the scenario's configuration (`dmin` is one value
-//! for both planners, spec §3 Decision 0.2). Before the drive this is shown and may be put
-//! right; once the robot drives, a difference fails the exercise.
+//! for both planners, spec §3 Decision 0.2), and that no parameter in use is one the page
+//! warns about ([`ParameterWarning`](super::ParameterWarning): a `dmin` at which the body
+//! can touch, gains that make a wheel's loop unstable or limp) — spec §7 Decision 0.3: a
+//! value the page warns about never passes. Before the drive both are shown and may be put
+//! right; once the robot drives, a difference or a warning fails the exercise.
 
 use core::fmt;
 use std::collections::BTreeMap;
@@ -107,7 +113,8 @@ pub enum Check {
         at_least: u64,
     },
     /// The robot's speed came within `band_percent` of `speed` within `within_s` of
-    /// DriveControl's first speed command.
+    /// DriveControl's first speed command. Measured: the fastest speed in that time
+    /// \[m/s\].
     ReachSpeed {
         /// \[m/s\].
         speed: f64,
@@ -128,12 +135,27 @@ pub enum Check {
         /// Metres.
         at_least_m: f64,
     },
+    /// Localization's position stayed within `at_most_m` of the robot's true position
+    /// while driving. Measured: the largest distance between them \[m\].
+    MaxLocalizationError {
+        /// Metres.
+        at_most_m: f64,
+    },
+    /// Localization's heading stayed within `at_most_deg` of the robot's true heading
+    /// while driving. Measured: the largest difference \[°\].
+    MaxLocalizationHeadingError {
+        /// Degrees.
+        at_most_deg: f64,
+    },
     /// A component went to Error while driving, and every component that did was made
     /// Active again (Reset, then Activate).
     Recovered,
     /// Only the parameters the exercise names were changed (always checked; module
     /// documentation).
     OnlyAllowed,
+    /// No parameter in use is one the page warns about (always checked; module
+    /// documentation).
+    NoWarning,
 }
 
 /// The unit of a check's measured value.
@@ -155,6 +177,9 @@ pub enum Unit {
     /// Percent.
     #[serde(rename = "percent")]
     Percent,
+    /// Metres per second.
+    #[serde(rename = "m/s")]
+    MetresPerSecond,
 }
 
 impl fmt::Display for Unit {
@@ -165,6 +190,7 @@ impl fmt::Display for Unit {
             Self::Metres => " m",
             Self::Plans => " plans",
             Self::Percent => " %",
+            Self::MetresPerSecond => " m/s",
         })
     }
 }
@@ -173,14 +199,19 @@ impl Check {
     /// The unit of the value measured for this check (`None`: it measures none).
     pub fn unit(&self) -> Option<Unit> {
         match self {
-            Self::Arrived { .. } | Self::ReachSpeed { .. } => Some(Unit::Seconds),
-            Self::ArrivalHeading { .. } | Self::ApproachHeading { .. } => Some(Unit::Degrees),
-            Self::MinClearance { .. } | Self::BackwardDistance { .. } => Some(Unit::Metres),
+            Self::Arrived { .. } => Some(Unit::Seconds),
+            Self::ReachSpeed { .. } => Some(Unit::MetresPerSecond),
+            Self::ArrivalHeading { .. }
+            | Self::ApproachHeading { .. }
+            | Self::MaxLocalizationHeadingError { .. } => Some(Unit::Degrees),
+            Self::MinClearance { .. }
+            | Self::BackwardDistance { .. }
+            | Self::MaxLocalizationError { .. } => Some(Unit::Metres),
             Self::MaxReplans { .. } | Self::MinReplans { .. } | Self::MinGlobalPlans { .. } => {
                 Some(Unit::Plans)
             }
             Self::MaxOvershoot { .. } => Some(Unit::Percent),
-            Self::NoBump | Self::Recovered | Self::OnlyAllowed => None,
+            Self::NoBump | Self::Recovered | Self::OnlyAllowed | Self::NoWarning => None,
         }
     }
 
@@ -205,6 +236,10 @@ impl Check {
                 at_most_percent,
             } => vec![("speed", speed), ("at_most_percent", at_most_percent)],
             Self::BackwardDistance { at_least_m } => vec![("at_least_m", at_least_m)],
+            Self::MaxLocalizationError { at_most_m } => vec![("at_most_m", at_most_m)],
+            Self::MaxLocalizationHeadingError { at_most_deg } => {
+                vec![("at_most_deg", at_most_deg)]
+            }
             _ => Vec::new(),
         }
     }
@@ -256,8 +291,19 @@ impl fmt::Display for Check {
             Self::BackwardDistance { at_least_m } => {
                 write!(f, "drive at least {} m backward", number(*at_least_m))
             }
+            Self::MaxLocalizationError { at_most_m } => write!(
+                f,
+                "Localization's position within {} m of the robot's",
+                number(*at_most_m)
+            ),
+            Self::MaxLocalizationHeadingError { at_most_deg } => write!(
+                f,
+                "Localization's heading within {}° of the robot's",
+                number(*at_most_deg)
+            ),
             Self::Recovered => write!(f, "recover from the fault (Reset, then Activate)"),
             Self::OnlyAllowed => write!(f, "change only the parameters named"),
+            Self::NoWarning => write!(f, "no parameter the page warns about"),
         }
     }
 }
@@ -277,9 +323,14 @@ impl Exercise {
             return Err(err("no checks".to_owned()));
         }
         for (i, check) in self.checks.iter().enumerate() {
-            if matches!(check, Check::OnlyAllowed) {
+            if let Check::OnlyAllowed | Check::NoWarning = check {
+                let name = if matches!(check, Check::OnlyAllowed) {
+                    "only_allowed"
+                } else {
+                    "no_warning"
+                };
                 return Err(err(format!(
-                    "checks[{i}]: only_allowed is always checked; do not list it"
+                    "checks[{i}]: {name} is always checked; do not list it"
                 )));
             }
             for (what, v) in check.numbers() {
@@ -361,6 +412,10 @@ pub struct CheckStatus {
     /// (`Component.Parameter`).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub changed: Vec<String>,
+    /// For [`Check::NoWarning`]: the parameters in use that the page warns about
+    /// (`Component.Parameter`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warned: Vec<String>,
 }
 
 impl fmt::Display for CheckStatus {
@@ -380,6 +435,9 @@ impl fmt::Display for CheckStatus {
         if !self.changed.is_empty() {
             write!(f, " (changed: {})", self.changed.join(", "))?;
         }
+        if !self.warned.is_empty() {
+            write!(f, " (warned: {})", self.warned.join(", "))?;
+        }
         Ok(())
     }
 }
@@ -394,7 +452,7 @@ pub struct ExerciseStatus {
     pub may_change: Vec<String>,
     /// The actions expected.
     pub actions: Vec<String>,
-    /// Each check, then the rule [`Check::OnlyAllowed`] last.
+    /// Each check, then the rules [`Check::OnlyAllowed`] and [`Check::NoWarning`] last.
     pub checks: Vec<CheckStatus>,
     /// The verdict.
     pub verdict: Verdict,

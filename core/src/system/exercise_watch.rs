@@ -9,7 +9,11 @@ use super::exercise::{
     parameter_values,
 };
 use super::kind::ComponentKind;
+use super::parameter_warning::ParameterWarning;
+use super::rest::Offset;
 use super::robot::System;
+use super::telemetry::TelemetrySample;
+use crate::motion::angle_diff;
 
 /// Four decimals: what a person reads (the state is decided on the exact value).
 fn round4(v: f64) -> f64 {
@@ -33,6 +37,13 @@ pub struct ExerciseWatch {
     progress: Vec<Progress>,
     rule: Progress,
     changed: Vec<String>,
+    warning_rule: Progress,
+    warned: Vec<String>,
+    /// Where the robot came to rest off the goal, as last looked (the mission's).
+    off_goal: Option<Offset>,
+    /// The heading error at the goal position before the final turn \[rad\] (the
+    /// mission's), as last looked.
+    approach: Option<f64>,
     events_seen: u64,
     samples_seen: u64,
     started_ns: Option<u64>,
@@ -69,8 +80,12 @@ impl ExerciseWatch {
             time_limit_ns: libm::round(time_limit_s * 1e9) as u64,
             baseline,
             progress: vec![open.clone(); exercise.checks.len()],
-            rule: open,
+            rule: open.clone(),
             changed: Vec::new(),
+            warning_rule: open,
+            warned: Vec::new(),
+            off_goal: None,
+            approach: None,
             events_seen: system.record().event_count(),
             samples_seen: system.record().telemetry().total(),
             started_ns: None,
@@ -107,6 +122,10 @@ impl ExerciseWatch {
         if self.ended() {
             return;
         }
+        if self.started_ns.is_some() {
+            self.off_goal = system.mission().off_goal();
+            self.approach = system.mission().approach_heading_error();
+        }
         let record = system.record();
         let events: Vec<_> = record.events_since(self.events_seen).cloned().collect();
         self.events_seen = record.event_count();
@@ -135,7 +154,7 @@ impl ExerciseWatch {
             match (e.peek(), s.peek()) {
                 (Some(ev), Some(sa)) if sa.time_ns <= ev.time_ns => {
                     if let Some(sa) = s.next() {
-                        self.on_sample(sa.time_ns, sa.v_cmd, sa.v);
+                        self.on_sample(sa);
                     }
                 }
                 (Some(_), _) => {
@@ -145,7 +164,7 @@ impl ExerciseWatch {
                 }
                 (None, _) => {
                     if let Some(sa) = s.next() {
-                        self.on_sample(sa.time_ns, sa.v_cmd, sa.v);
+                        self.on_sample(sa);
                     }
                 }
             }
@@ -246,7 +265,15 @@ impl ExerciseWatch {
         }
     }
 
-    fn on_sample(&mut self, time_ns: u64, v_cmd: f64, v: f64) {
+    fn on_sample(&mut self, sample: &TelemetrySample) {
+        let (time_ns, v_cmd, v) = (sample.time_ns, sample.v_cmd, sample.v);
+        let position_error = libm::hypot(
+            sample.estimate.x - sample.pose.x,
+            sample.estimate.y - sample.pose.y,
+        );
+        let heading_error = angle_diff(sample.estimate.theta, sample.pose.theta)
+            .abs()
+            .to_degrees();
         let Some(start) = self.started_ns else {
             return;
         };
@@ -271,19 +298,22 @@ impl ExerciseWatch {
                     within_s,
                     band_percent,
                 } => {
-                    // The time the speed came within the band, late or not.
+                    // The fastest speed within `within_s` of the first command: one meaning,
+                    // passed or failed.
                     let Some(c) = command else { continue };
                     let after = (time_ns - c) as f64 * 1e-9;
-                    let reached = v >= speed * (1.0 - band_percent / 100.0);
-                    if reached && p.measured.is_none() {
-                        p.measured = Some(after);
-                    }
-                    if p.state == CheckState::Open {
-                        if reached && after <= within_s {
-                            p.state = CheckState::Passed;
-                        } else if after > within_s {
+                    if after > within_s {
+                        if p.state == CheckState::Open {
                             p.state = CheckState::Failed;
                         }
+                        continue;
+                    }
+                    let fastest = p.measured.map_or(v, |m| m.max(v));
+                    p.measured = Some(fastest);
+                    if p.state == CheckState::Open
+                        && fastest >= speed * (1.0 - band_percent / 100.0)
+                    {
+                        p.state = CheckState::Passed;
                     }
                 }
                 Check::MaxOvershoot {
@@ -293,6 +323,20 @@ impl ExerciseWatch {
                     let over = (max_speed / speed - 1.0) * 100.0;
                     p.measured = Some(over.max(0.0));
                     if over > at_most_percent && p.state == CheckState::Open {
+                        p.state = CheckState::Failed;
+                    }
+                }
+                Check::MaxLocalizationError { at_most_m } => {
+                    let worst = p.measured.map_or(position_error, |m| m.max(position_error));
+                    p.measured = Some(worst);
+                    if worst > at_most_m && p.state == CheckState::Open {
+                        p.state = CheckState::Failed;
+                    }
+                }
+                Check::MaxLocalizationHeadingError { at_most_deg } => {
+                    let worst = p.measured.map_or(heading_error, |m| m.max(heading_error));
+                    p.measured = Some(worst);
+                    if worst > at_most_deg && p.state == CheckState::Open {
                         p.state = CheckState::Failed;
                     }
                 }
@@ -365,6 +409,7 @@ impl ExerciseWatch {
     }
 
     fn check_rule(&mut self, system: &System) {
+        self.check_warnings(system);
         let now = parameter_values(system);
         let mut changed = Vec::new();
         for ((kind, name), value) in &now {
@@ -386,6 +431,16 @@ impl ExerciseWatch {
             CheckState::Failed
         };
         self.changed = changed;
+    }
+
+    /// The rule [`Check::NoWarning`]: decided as [`Self::check_rule`]'s.
+    fn check_warnings(&mut self, system: &System) {
+        if self.warning_rule.state == CheckState::Failed && self.started_ns.is_some() {
+            return;
+        }
+        let warned = ParameterWarning::warned(system.wiring());
+        self.warning_rule.state = pass_if(warned.is_empty());
+        self.warned = warned;
     }
 
     fn since_start(&self, time_ns: u64) -> f64 {
@@ -413,13 +468,29 @@ impl ExerciseWatch {
             }
         }
         let faulted = self.fault_seen && self.faulted.is_empty();
+        // At rest off the goal: the heading checks are decided on the heading it stopped
+        // with, and the one it reached the goal position with, if it did.
+        let at_rest = self.off_goal.map(|o| o.heading_error.to_degrees());
+        let approach = self.approach.map(f64::to_degrees);
         for (check, p) in self.exercise.checks.iter().zip(&mut self.progress) {
             if p.state != CheckState::Open {
+                continue;
+            }
+            let heading = match check {
+                Check::ArrivalHeading { within_deg } => at_rest.map(|d| (d, *within_deg)),
+                Check::ApproachHeading { within_deg } => approach.map(|d| (d, *within_deg)),
+                _ => None,
+            };
+            if let Some((deg, within)) = heading {
+                p.measured = Some(deg);
+                p.state = pass_if(deg <= within);
                 continue;
             }
             p.state = match check {
                 Check::NoBump
                 | Check::MinClearance { .. }
+                | Check::MaxLocalizationError { .. }
+                | Check::MaxLocalizationHeadingError { .. }
                 | Check::MaxReplans { .. }
                 | Check::MaxOvershoot { .. } => CheckState::Passed,
                 Check::Recovered => pass_if(faulted),
@@ -430,7 +501,8 @@ impl ExerciseWatch {
                 | Check::MinGlobalPlans { .. }
                 | Check::ReachSpeed { .. }
                 | Check::BackwardDistance { .. }
-                | Check::OnlyAllowed => CheckState::Failed,
+                | Check::OnlyAllowed
+                | Check::NoWarning => CheckState::Failed,
             };
         }
     }
@@ -448,6 +520,7 @@ impl ExerciseWatch {
                 measured: p.measured.map(round4),
                 unit: check.unit(),
                 changed: Vec::new(),
+                warned: Vec::new(),
             })
             .collect();
         checks.push(CheckStatus {
@@ -456,6 +529,15 @@ impl ExerciseWatch {
             measured: None,
             unit: None,
             changed: self.changed.clone(),
+            warned: Vec::new(),
+        });
+        checks.push(CheckStatus {
+            check: Check::NoWarning,
+            state: self.warning_rule.state,
+            measured: None,
+            unit: None,
+            changed: Vec::new(),
+            warned: self.warned.clone(),
         });
         let verdict = match (self.started_ns, self.ended_ns) {
             (None, _) => Verdict::Waiting,

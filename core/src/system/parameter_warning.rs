@@ -8,8 +8,21 @@ use core::fmt;
 
 use serde::Serialize;
 
+use super::events::EventKind;
+use super::kind::ComponentKind;
+use super::wiring::Wiring;
 use crate::components::GainWarning;
 use crate::present::number;
+
+/// The parameters a warning can stand beside, by component (the one list the parameters
+/// panel and an exercise's rule read).
+const WARNED: [(ComponentKind, &str); 5] = [
+    (ComponentKind::MotorControl, "PGainL"),
+    (ComponentKind::MotorControl, "DGainL"),
+    (ComponentKind::MotorControl, "PGainR"),
+    (ComponentKind::MotorControl, "DGainR"),
+    (ComponentKind::LocalPathPlanning, "dmin"),
+];
 
 /// A parameter's warning (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, strum::VariantNames)]
@@ -56,6 +69,57 @@ impl From<GainWarning> for ParameterWarning {
 impl ParameterWarning {
     /// Every kind a warning serializes with (`warning.<kind>` in a catalogue).
     pub const KINDS: &'static [&'static str] = <Self as strum::VariantNames>::VARIANTS;
+
+    /// The warning beside `kind`'s parameter `name` with the values in use in `wiring`:
+    /// MotorControl's gains of one wheel checked together at its period ([`GainWarning`];
+    /// an unstable loop beside the P gain, a limp wheel beside the D gain),
+    /// LocalPathPlanning's `dmin` against the map and the body
+    /// ([`Wiring::clearance_warning`]). `None`: nothing to warn about.
+    pub fn of(wiring: &Wiring, kind: ComponentKind, name: &str) -> Option<Self> {
+        match (kind, name) {
+            (ComponentKind::MotorControl, "PGainL" | "DGainL" | "PGainR" | "DGainR") => {
+                let ec = wiring.execution_context();
+                let dt = ec.period_of(kind.index()).map_or(f64::NAN, |ticks| {
+                    (ticks * ec.base_period_ns()) as f64 * 1e-9
+                });
+                let p = wiring.motor_control().config().params();
+                let (pg, dg) = if name.ends_with('L') {
+                    (p.p_gain_l, p.d_gain_l)
+                } else {
+                    (p.p_gain_r, p.d_gain_r)
+                };
+                match GainWarning::check(pg, dg, dt)? {
+                    w @ GainWarning::Unstable { .. } if name.starts_with('P') => Some(w),
+                    w @ GainWarning::Limp { .. } if name.starts_with('D') => Some(w),
+                    _ => None,
+                }
+                .map(Self::from)
+            }
+            (ComponentKind::LocalPathPlanning, "dmin") => match wiring.clearance_warning()? {
+                EventKind::ClearanceWarning {
+                    dmin,
+                    grid_size,
+                    body_radius,
+                } => Some(Self::Clearance {
+                    dmin,
+                    grid_size,
+                    body_radius,
+                }),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// Every parameter with a warning in `wiring`, as `Component.Parameter`, in the order
+    /// the parameters panel lists them.
+    pub fn warned(wiring: &Wiring) -> Vec<String> {
+        WARNED
+            .iter()
+            .filter(|(kind, name)| Self::of(wiring, *kind, name).is_some())
+            .map(|(kind, name)| format!("{}.{name}", kind.name()))
+            .collect()
+    }
 }
 
 impl fmt::Display for ParameterWarning {

@@ -32,7 +32,7 @@ use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
 use super::conf_bundle::unknown_parameter;
-use super::events::{EventKind, SystemEvent};
+use super::events::SystemEvent;
 use super::exercise::{ExerciseStatus, parameter_values};
 use super::exercise_watch::ExerciseWatch;
 use super::history::History;
@@ -46,7 +46,6 @@ use super::scenario::{FileResolver, MapSource, MemoryResolver, Scenario};
 use super::setup::{self, BuildOptions, PLAN_SECONDS, SETUP_VERSION, Setup};
 use super::status::Status;
 use super::timeline::Timeline;
-use crate::components::GainWarning;
 use crate::errors::SessionError;
 use crate::interfaces::Direction;
 use crate::map::{GridMap, MapUpdate};
@@ -633,7 +632,7 @@ impl Session {
                     reflection: spec.reflection.to_string(),
                     description: spec.description,
                     seed_text: spec.seed_text,
-                    warning: self.warning(kind, spec.name, period_s),
+                    warning: self.warning(kind, spec.name),
                     value: config.value(spec.name).unwrap_or(f64::NAN),
                     effective: config.effective_value(spec.name).unwrap_or(f64::NAN),
                     pending: config.is_pending(spec.name).unwrap_or(false),
@@ -649,42 +648,10 @@ impl Session {
         out
     }
 
-    /// The warning shown beside parameter `name` of `kind` (see [`ParameterView::warning`]):
-    /// MotorControl's gains of one wheel checked together at its period `dt` \[s\]
-    /// ([`GainWarning`]), LocalPathPlanning's `dmin` against the map and the body
-    /// ([`Wiring::clearance_warning`](super::Wiring::clearance_warning)).
-    fn warning(&self, kind: ComponentKind, name: &str, dt: f64) -> Option<ParameterWarning> {
-        let wiring = self.system.wiring();
-        match (kind, name) {
-            (ComponentKind::MotorControl, "PGainL" | "DGainL" | "PGainR" | "DGainR") => {
-                let p = wiring.motor_control().config().params();
-                let (pg, dg) = if name.ends_with('L') {
-                    (p.p_gain_l, p.d_gain_l)
-                } else {
-                    (p.p_gain_r, p.d_gain_r)
-                };
-                // An unstable loop is P's doing, a limp wheel D's: each beside its gain.
-                match GainWarning::check(pg, dg, dt)? {
-                    w @ GainWarning::Unstable { .. } if name.starts_with('P') => Some(w),
-                    w @ GainWarning::Limp { .. } if name.starts_with('D') => Some(w),
-                    _ => None,
-                }
-                .map(ParameterWarning::from)
-            }
-            (ComponentKind::LocalPathPlanning, "dmin") => match wiring.clearance_warning()? {
-                EventKind::ClearanceWarning {
-                    dmin,
-                    grid_size,
-                    body_radius,
-                } => Some(ParameterWarning::Clearance {
-                    dmin,
-                    grid_size,
-                    body_radius,
-                }),
-                _ => None,
-            },
-            _ => None,
-        }
+    /// The warning shown beside parameter `name` of `kind` (see [`ParameterView::warning`]
+    /// and [`ParameterWarning::of`], which an exercise's rule reads too).
+    fn warning(&self, kind: ComponentKind, name: &str) -> Option<ParameterWarning> {
+        ParameterWarning::of(self.system.wiring(), kind, name)
     }
 
     /// The last `seconds` (at most [`MAX_PLOT_SECONDS`]) of telemetry, one array per series.

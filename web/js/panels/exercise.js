@@ -23,6 +23,7 @@ export function checkText(check) {
 /** @param {CheckStatus} c */
 function measuredText(c) {
   if (c.changed?.length) return t('exercise.changed', { names: c.changed.join(', ') });
+  if (c.warned?.length) return t('exercise.warned', { names: c.warned.join(', ') });
   if (c.measured === null || c.measured === undefined) return '';
   return t(`measured.${c.check.check}`, { value: num(c.measured, 3) });
 }
