@@ -199,9 +199,10 @@ pub struct TelemetryView {
     pub direction: DirectionView,
     /// Distance from the robot to the goal \[m\] (`null` without a goal).
     pub distance_to_goal: Option<f64>,
-    /// Actual speed \[m/s\] (the last sample).
+    /// Measured speed \[m/s\]: the physics' motion now (`Measured`), 0 while it does not
+    /// execute.
     pub v: f64,
-    /// Actual turn rate \[rad/s\].
+    /// Measured turn rate \[rad/s\] (as `v`).
     pub w: f64,
     /// Commanded speed \[m/s\].
     pub v_cmd: f64,
