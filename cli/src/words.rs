@@ -394,7 +394,12 @@ impl Words {
             }
             _ => format!("status.{kind}"),
         };
-        self.t(&key, &Value::Object(vars))
+        let said = self.t(&key, &Value::Object(vars));
+        // The session's clock stands still: the cause is said with the status.
+        if fields.get("paused") == Some(&Value::Bool(true)) {
+            return self.t("status.paused", &json!({ "status": said }));
+        }
+        said
     }
 
     // -------------------------------------------------------------------- components

@@ -186,6 +186,12 @@ fn facts() -> Vec<Said> {
             page: json!(["warningText", data(&w)]),
         });
     }
+    // The session's paused clock, a cause said with the status.
+    let paused = json!({ "direction": "Forward", "paused": true });
+    said.push(Said {
+        cli: words.status_text("driving", &paused),
+        page: json!(["statusText", "driving", paused]),
+    });
     said.push(Said {
         cli: words.reason(&Reason::ObstacleAhead { ahead: 0.42 }),
         page: json!(["reasonText", {"kind": "obstacle_ahead", "ahead": 0.42}]),

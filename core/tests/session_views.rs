@@ -501,3 +501,22 @@ fn a_frozen_robot_shows_no_speed_after_reset_all_mid_drive() {
         assert_eq!(t.status_kind, "ready", "{}", t.status);
     }
 }
+
+#[test]
+fn a_paused_clock_is_a_cause_the_status_carries() {
+    let (mut session, _) = loaded("open_field");
+    session.all(&Input::ActivateAll);
+    assert!(run(&mut session, 8.0, |s| s.telemetry().v > 0.3));
+    session.set_paused(true);
+    let t = session.frame().telemetry;
+    assert_eq!(
+        t.status_kind, "driving",
+        "what the robot does stays the kind"
+    );
+    assert_eq!(
+        t.status_fields.get("paused"),
+        Some(&serde_json::Value::Bool(true))
+    );
+    session.set_paused(false);
+    assert_eq!(session.telemetry().status_fields.get("paused"), None);
+}

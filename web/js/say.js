@@ -141,7 +141,7 @@ export function sayer(t, has) {
   /**
    * What the robot is doing (the core's `Status`: its `kind` and fields, the telemetry's
    * `status_kind` and `status_fields`) said through `status.<kind>` with its details — which
-   * component, why — in the page's language.
+   * component, why, and `status.paused` while the clock is paused — in the page's language.
    */
   function statusText(kind, fields = {}) {
     const vars = { ...fields };
@@ -152,7 +152,9 @@ export function sayer(t, has) {
     let key = `status.${kind}`;
     if (kind === 'waiting_for_plan' && fields.retrying) key = 'status.waiting_for_plan.retrying';
     if (kind === 'component_error' && !fields.reason) key = 'status.component_error.no_reason';
-    return t(key, vars);
+    const said = t(key, vars);
+    // The session's clock stands still: the cause is said with the status.
+    return fields.paused === true ? t('status.paused', { status: said }) : said;
   }
 
   // ---------------------------------------------------------------------------- components

@@ -119,6 +119,11 @@ impl Session {
             Some(serde_json::Value::String(k)) => k,
             _ => String::new(),
         };
+        // The session's clock stands still: a cause of what the robot does (spec §7
+        // Decisions 0.3, "motion words"), said with the status (`status.paused`).
+        if self.paused() {
+            status_fields.insert("paused".to_owned(), serde_json::Value::Bool(true));
+        }
         TelemetryView {
             time_s: s.time(),
             state: s.state(),

@@ -176,7 +176,8 @@ pub struct TelemetryView {
     /// page ties its notices to.
     pub status_kind: String,
     /// Its fields (`component`, `reason`, `by`, `direction`, `retrying`, `v_cmd`, …), so the
-    /// page can say the status in its own language with the same details.
+    /// page can say the status in its own language with the same details; and `paused:
+    /// true` while the session's clock is paused (a cause the status says, `status.paused`).
     #[cfg_attr(feature = "typescript", ts(type = "Record<string, unknown>"))]
     pub status_fields: serde_json::Map<String, serde_json::Value>,
     /// Whether the robot has arrived at the goal.

@@ -48,8 +48,7 @@ export function createTelemetry(root, app) {
       // What the core says is true (rtnav::system::Status), not guessed here: said from the
       // catalogue's words for the status's kind, with its fields (which component, why).
       const said = statusText(v.status_kind, v.status_fields);
-      let status = said.charAt(0).toUpperCase() + said.slice(1);
-      if (v.paused) status += t('telemetry.paused');
+      const status = said.charAt(0).toUpperCase() + said.slice(1);
       set('status', status);
       const shown = /** @type {HTMLElement} */ (values.get('status'));
       if (shown.title !== status) shown.title = status;
