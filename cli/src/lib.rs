@@ -4,7 +4,9 @@
 //! - [`alloc`]: a counting allocator (a binary installs it) for allocation bounds and memory;
 //! - [`rng`]: the tools' seeded random numbers (the core reads none);
 //! - [`fuzz`]: the fuzzer — one target per reader and per kind of hostile call;
-//! - [`soak`]: hours of simulated closed loop with random goals and map edits.
+//! - [`soak`]: hours of simulated closed loop with random goals and map edits;
+//! - [`words`]: the command line's words for the core's facts, from the page's English
+//!   catalogue.
 //!
 //! The external data (`../shared/data`, or `$RTNAV_DATA`) is found by `rtnav::data`.
 
@@ -12,6 +14,7 @@ pub mod alloc;
 pub mod fuzz;
 pub mod rng;
 pub mod soak;
+pub mod words;
 
 use std::path::{Path, PathBuf};
 

@@ -49,6 +49,7 @@ use rtnav::system::{
     BuildOptions, EventKind, FileResolver, OutcomeKind, Replay, Scenario, ScenarioRun, Session,
     Setup, System, Verdict, check_exercise, setup,
 };
+use rtnav_cli::words::Words;
 use rtnav_cli::{alloc, fuzz, soak};
 
 mod replay_cmd;
@@ -352,10 +353,25 @@ fn main() -> ExitCode {
 
 type CliResult<T> = Result<T, String>;
 
+/// An error of the core in the catalogue's words (`rtnav_cli::words`).
+fn said(e: impl Into<rtnav::Error>) -> String {
+    Words::english().error(&e.into())
+}
+
+/// An error of the core about the file `path`, in the catalogue's words.
+fn said_in_file(path: &Path, e: impl Into<rtnav::Error>) -> String {
+    let words = Words::english();
+    let file = path.display().to_string();
+    words.t(
+        "error.in_file",
+        &serde_json::json!({ "file": file, "error": words.error(&e.into()) }),
+    )
+}
+
 fn load(path: &Path, root: Option<PathBuf>) -> CliResult<(Scenario, RepoResolver)> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
-    let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
+    let scenario = Scenario::from_json(&text).map_err(|e| said_in_file(path, e))?;
     let root = match root {
         Some(r) => r,
         None => find_root(path, &scenario),
@@ -385,11 +401,11 @@ fn find_root(path: &Path, scenario: &Scenario) -> PathBuf {
 }
 
 fn write_png(system: &System, size: (u32, u32), path: &Path) -> CliResult<()> {
-    let mut renderer = Renderer::new(size.0, size.1).map_err(|e| e.to_string())?;
+    let mut renderer = Renderer::new(size.0, size.1).map_err(said)?;
     let frame = renderer
         .render_system(system, &caption(system), Layers::ALL)
-        .map_err(|e| e.to_string())?;
-    let bytes = frame.encode_png().map_err(|e| e.to_string())?;
+        .map_err(said)?;
+    let bytes = frame.encode_png().map_err(said)?;
     std::fs::write(path, bytes).map_err(|e| format!("cannot write `{}`: {e}", path.display()))
 }
 
@@ -404,9 +420,9 @@ fn run(
 ) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
     let resolver: &dyn FileResolver = &resolver;
-    let mut run = ScenarioRun::new(&scenario, resolver).map_err(|e| e.to_string())?;
+    let mut run = ScenarioRun::new(&scenario, resolver).map_err(said)?;
     if let Some(t) = until {
-        run.set_limit(t).map_err(|e| e.to_string())?;
+        run.set_limit(t).map_err(said)?;
     }
     let limit_ms = (run.limit() * 1000.0) as u64;
     let mut rows = String::new();
@@ -431,7 +447,7 @@ fn run(
         }
         if print_events {
             for e in system.record().events_since(printed) {
-                bar.suspend(|| println!("{e}"));
+                bar.suspend(|| println!("{}", Words::english().logged(e)));
             }
             printed = system.record().event_count();
         }
@@ -456,7 +472,10 @@ fn run(
     let wall = started.elapsed().as_secs_f64();
     let report = run.report();
     println!("{report}");
-    println!("status          {}", run.system().status());
+    println!(
+        "status          {}",
+        Words::english().status(&run.system().status())
+    );
     let sim = report.sim_time;
     println!(
         "wall time       {wall:.3} s (real-time factor {:.0}×)",
@@ -496,22 +515,20 @@ fn run(
 fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
     let options = BuildOptions { full_field: true };
-    let mut system = setup::build(&scenario, &resolver, &Setup::of(&scenario), options)
-        .map_err(|e| e.to_string())?;
+    let mut system =
+        setup::build(&scenario, &resolver, &Setup::of(&scenario), options).map_err(said)?;
     // The set-up gives the planners PLAN_SECONDS; a large map's plan is spread over more
     // executions of LocalPathPlanning (at most FIELD_CELLS_PER_EXECUTION field cells each):
     // go on as long as the map's size needs, twice over (bounded by the map), then draw.
     if let (false, Some(map)) = (system.wiring().planning_settled(), system.map()) {
         let executions = (map.width() * map.height()).div_ceil(FIELD_CELLS_PER_EXECUTION) + 2;
         let seconds = 2.0 * executions as f64 / system.rates().local_path_planning;
-        system
-            .run_until_planned(seconds)
-            .map_err(|e| e.to_string())?;
+        system.run_until_planned(seconds).map_err(said)?;
     }
     let planned = system.mission().plan_sent();
     for e in system.record().events() {
         if matches!(e.kind, EventKind::PlanningFailed { .. }) {
-            println!("{e}");
+            println!("{}", Words::english().logged(e));
         }
     }
     write_png(&system, size, png)?;
@@ -528,17 +545,15 @@ fn render(path: &Path, png: &Path, root: Option<PathBuf>, size: (u32, u32)) -> C
 /// set-up built with the full potential field).
 fn page_session(path: &Path, root: Option<PathBuf>) -> CliResult<Session> {
     let (scenario, resolver) = load(path, root)?;
-    let mut session = Session::new().map_err(|e| e.to_string())?;
+    let mut session = Session::new().map_err(said)?;
     // The set-up's errors name the scenario already; a file's name its path.
-    session
-        .load_scenario(scenario, &resolver)
-        .map_err(|e| e.to_string())?;
+    session.load_scenario(scenario, &resolver).map_err(said)?;
     Ok(session)
 }
 
 fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<ExitCode> {
     let session = page_session(path, root)?;
-    let cell = session.inspect_cell(x, y).map_err(|e| e.to_string())?;
+    let cell = session.inspect_cell(x, y).map_err(said)?;
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
     Ok(ExitCode::SUCCESS)
@@ -609,8 +624,8 @@ fn describe(
     let (scenario, resolver) = load(path, root)?;
     let graph = match until {
         Some(t) => {
-            let mut run = ScenarioRun::new(&scenario, &resolver).map_err(|e| e.to_string())?;
-            run.set_limit(t).map_err(|e| e.to_string())?;
+            let mut run = ScenarioRun::new(&scenario, &resolver).map_err(said)?;
+            run.set_limit(t).map_err(said)?;
             while run.advance(1000).is_none() {}
             run.system().wiring().graph()
         }
@@ -620,7 +635,7 @@ fn describe(
             &Setup::of(&scenario),
             BuildOptions::default(),
         )
-        .map_err(|e| e.to_string())?
+        .map_err(said)?
         .wiring()
         .graph(),
     };
@@ -733,7 +748,7 @@ fn run_soak(
     let path = scenario.unwrap_or_else(|| root.join("fixtures/scenarios/open_field.json"));
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
-    let scenario = Scenario::from_json(&text).map_err(|e| format!("`{}`: {e}", path.display()))?;
+    let scenario = Scenario::from_json(&text).map_err(|e| said_in_file(&path, e))?;
     let resolver = RepoResolver::new(&root);
     let needs_data = scenario
         .map_files(&resolver)
@@ -755,7 +770,7 @@ fn run_soak(
         &Setup::of(&scenario),
         BuildOptions::default(),
     )
-    .map_err(|e| e.to_string())?;
+    .map_err(said)?;
     let mut options = soak::SoakOptions::new(hours, seed);
     if let Some(d) = scenario
         .config

@@ -11,7 +11,9 @@ use std::process::ExitCode;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{Replay, Session, compare, setup_with};
 
-use super::{CliResult, load, write_png};
+use rtnav_cli::words::Words;
+
+use super::{CliResult, load, said, said_in_file, write_png};
 
 /// The scenario file of scenario `name`.
 fn scenario_file(name: &str, root: Option<&Path>, near: &Path) -> CliResult<PathBuf> {
@@ -54,21 +56,22 @@ pub(super) fn replay(
 ) -> CliResult<ExitCode> {
     let text = std::fs::read_to_string(file)
         .map_err(|e| format!("cannot read `{}`: {e}", file.display()))?;
-    let replay = Replay::from_json(&text).map_err(|e| format!("`{}`: {e}", file.display()))?;
+    let replay = Replay::from_json(&text).map_err(|e| said_in_file(file, e))?;
     let path = scenario_file(&replay.setup.scenario, root.as_deref(), file)?;
     let (scenario, resolver) = load(&path, root)?;
-    let mut session = Session::new().map_err(|e| e.to_string())?;
-    session
-        .load_scenario(scenario, &resolver)
-        .map_err(|e| e.to_string())?;
+    let mut session = Session::new().map_err(said)?;
+    session.load_scenario(scenario, &resolver).map_err(said)?;
     let check = session
         .load_replay(&replay)
-        .map_err(|e| format!("`{}`: {e}", file.display()))?;
+        .map_err(|e| said_in_file(file, e))?;
     println!("replay          {} ({} bytes)", file.display(), text.len());
     println!("scenario        {}", check.scenario);
     println!("requests        {}", check.inputs);
     println!("simulated time  {:.3} s", session.time_s());
-    println!("status          {}", session.status());
+    println!(
+        "status          {}",
+        Words::english().status(&session.status())
+    );
     println!(
         "samples         {} (recorded {})",
         check.samples, check.expected_samples
@@ -116,19 +119,18 @@ pub(super) fn compare_cmd(
     size: (u32, u32),
 ) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(path, root)?;
-    let setup_a = setup_with(&scenario, &conf_text(a)?).map_err(|e| format!("--a: {e}"))?;
-    let setup_b = setup_with(&scenario, &conf_text(b)?).map_err(|e| format!("--b: {e}"))?;
-    let comparison =
-        compare(&scenario, &resolver, &setup_a, &setup_b).map_err(|e| e.to_string())?;
+    let setup_a = setup_with(&scenario, &conf_text(a)?).map_err(|e| format!("--a: {}", said(e)))?;
+    let setup_b = setup_with(&scenario, &conf_text(b)?).map_err(|e| format!("--b: {}", said(e)))?;
+    let comparison = compare(&scenario, &resolver, &setup_a, &setup_b).map_err(said)?;
     print!("{comparison}");
     if let Some(p) = png {
-        let mut renderer = Renderer::new(size.0, size.1).map_err(|e| e.to_string())?;
+        let mut renderer = Renderer::new(size.0, size.1).map_err(said)?;
         let a = comparison.system_a();
         let text = format!("A (solid) vs B (ghost)  {}", caption(a));
         let frame = renderer
             .render_compare(a, comparison.system_b(), &text, Layers::ALL)
-            .map_err(|e| e.to_string())?;
-        let bytes = frame.encode_png().map_err(|e| e.to_string())?;
+            .map_err(said)?;
+        let bytes = frame.encode_png().map_err(said)?;
         std::fs::write(p, bytes).map_err(|e| format!("cannot write `{}`: {e}", p.display()))?;
         println!("frame  {}", p.display());
     }

@@ -482,3 +482,41 @@ fn the_brush_covers_cells_around_the_cell_under_it_or_a_square_in_metres() {
     );
     assert_eq!(session.brush_cells(f64::NAN, oy, 3.0, false), Vec::new());
 }
+
+#[test]
+fn a_frozen_robot_shows_no_speed_after_reset_all_mid_drive() {
+    let (mut session, _) = loaded("open_field");
+    session.all(&Input::ActivateAll);
+    assert!(run(&mut session, 8.0, |s| s.telemetry().v > 0.3));
+    let driving = session.frame().telemetry;
+    assert!(driving.v > 0.3, "driving at {} m/s", driving.v);
+    // Reset all mid-drive: every component Inactive, the physics frozen where it stood.
+    session.all(&Input::ResetAll);
+    let pose = session.telemetry().pose;
+    run(&mut session, 1.0, |_| false);
+    assert_eq!(session.telemetry().pose, pose, "the robot does not move");
+    // The read-outs say what the robot does now, not the last sample's speeds.
+    for t in [session.telemetry(), session.frame().telemetry] {
+        assert_eq!((t.v, t.w), (0.0, 0.0), "a frozen robot shows no speed");
+        assert_eq!(t.status_kind, "ready", "{}", t.status);
+    }
+}
+
+#[test]
+fn a_paused_clock_is_a_cause_the_status_carries() {
+    let (mut session, _) = loaded("open_field");
+    session.all(&Input::ActivateAll);
+    assert!(run(&mut session, 8.0, |s| s.telemetry().v > 0.3));
+    session.set_paused(true);
+    let t = session.frame().telemetry;
+    assert_eq!(
+        t.status_kind, "driving",
+        "what the robot does stays the kind"
+    );
+    assert_eq!(
+        t.status_fields.get("paused"),
+        Some(&serde_json::Value::Bool(true))
+    );
+    session.set_paused(false);
+    assert_eq!(session.telemetry().status_fields.get("paused"), None);
+}

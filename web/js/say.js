@@ -189,7 +189,7 @@ export function sayer(t, has) {
   /**
    * What the robot is doing (the core's `Status`: its `kind` and fields, the telemetry's
    * `status_kind` and `status_fields`) said through `status.<kind>` with its details — which
-   * component, why — in the page's language.
+   * component, why, and `status.paused` while the clock is paused — in the page's language.
    * @param {string} kind
    * @param {Record<string, unknown>} [fields]
    * @returns {string}
@@ -204,7 +204,9 @@ export function sayer(t, has) {
     let key = `status.${kind}`;
     if (kind === 'waiting_for_plan' && fields.retrying) key = 'status.waiting_for_plan.retrying';
     if (kind === 'component_error' && !fields.reason) key = 'status.component_error.no_reason';
-    return t(key, vars);
+    const said = t(key, vars);
+    // The session's clock stands still: the cause is said with the status.
+    return fields.paused === true ? t('status.paused', { status: said }) : said;
   }
 
   // ---------------------------------------------------------------------------- components
@@ -246,13 +248,14 @@ const page = sayer(t, has);
 export const { reasonText, warningText, inputText, eventText, statusText, activityText } = page;
 
 /**
- * The status line (the telemetry's, and the scene's words): the robot's status as a sentence,
- * and whether the clock is paused.
+ * The status line (the telemetry's, and the scene's words): the robot's status as a sentence
+ * (with the clock's pause, which the status's fields carry).
+ * @param {Pick<TelemetryView, 'status_kind' | 'status_fields'>} v
+ * @returns {string}
  */
 export function statusLine(v) {
   const said = statusText(v.status_kind, v.status_fields);
-  const line = said.charAt(0).toUpperCase() + said.slice(1);
-  return v.paused ? line + t('telemetry.paused') : line;
+  return said.charAt(0).toUpperCase() + said.slice(1);
 }
 
 /**

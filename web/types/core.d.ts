@@ -1267,7 +1267,8 @@ status: string,
 status_kind: string, 
 /**
  * Its fields (`component`, `reason`, `by`, `direction`, `retrying`, `v_cmd`, …), so the
- * page can say the status in its own language with the same details.
+ * page can say the status in its own language with the same details; and `paused:
+ * true` while the session's clock is paused (a cause the status says, `status.paused`).
  */
 status_fields: Record<string, unknown>, 
 /**
@@ -1311,11 +1312,12 @@ direction: DirectionView,
  */
 distance_to_goal: number | null, 
 /**
- * Actual speed \[m/s\] (the last sample).
+ * Measured speed \[m/s\]: the physics' motion now (`Measured`), 0 while it does not
+ * execute.
  */
 v: number, 
 /**
- * Actual turn rate \[rad/s\].
+ * Measured turn rate \[rad/s\] (as `v`).
  */
 w: number, 
 /**

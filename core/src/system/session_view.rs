@@ -8,6 +8,7 @@ use super::super::inspect::CellInspection;
 use super::super::kind::ComponentKind;
 use super::super::picked_files::{PickError, PickedFiles};
 use super::super::refusal::Refusal;
+use super::super::rest::Measured;
 use super::super::scenario::Scenario;
 use super::super::status::SystemState;
 use super::super::views::{
@@ -105,6 +106,9 @@ impl Session {
         let m = s.mission();
         let last = s.record().telemetry().last();
         let pick = |f: fn(&super::super::telemetry::TelemetrySample) -> f64| last.map_or(0.0, f);
+        // What the robot does now: the physics' measured motion, zero while it does not
+        // execute (a frozen robot shows 0 whatever the last sample held).
+        let moving = Measured::of(s.wiring());
         let status = self.status();
         // The status as data: `{kind, …fields}` (`Status` is `serde(tag = "kind")`).
         let mut status_fields = match serde_json::to_value(&status) {
@@ -115,6 +119,11 @@ impl Session {
             Some(serde_json::Value::String(k)) => k,
             _ => String::new(),
         };
+        // The session's clock stands still: a cause of what the robot does (spec §7
+        // Decisions 0.3, "motion words"), said with the status (`status.paused`).
+        if self.paused() {
+            status_fields.insert("paused".to_owned(), serde_json::Value::Bool(true));
+        }
         TelemetryView {
             time_s: s.time(),
             state: s.state(),
@@ -132,8 +141,8 @@ impl Session {
             goal: m.goal().map(PoseView::from),
             direction: m.direction().into(),
             distance_to_goal: m.goal().map(|g| libm::hypot(g.x - pose.x, g.y - pose.y)),
-            v: pick(|t| t.v),
-            w: pick(|t| t.w),
+            v: moving.v,
+            w: moving.w,
             v_cmd: pick(|t| t.v_cmd),
             w_cmd: pick(|t| t.w_cmd),
             deviation: last.map_or(f64::NAN, |t| t.deviation),

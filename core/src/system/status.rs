@@ -71,8 +71,9 @@ impl fmt::Display for SystemState {
 /// ([`Motion`]); why, from the components' states and the mission. A kind that names a
 /// cause carries the motion as its field `motion`; the kinds without one say the motion
 /// themselves (see [`Status::motion`]).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, strum::VariantNames)]
 #[serde(tag = "kind", rename_all = "snake_case")]
+#[strum(serialize_all = "snake_case")]
 pub enum Status {
     /// No map is loaded.
     NoMap,
@@ -182,6 +183,10 @@ pub enum Status {
 }
 
 impl Status {
+    /// Every kind, by the name it serializes with: what a user interface that says the
+    /// status in its own words must have words for (`status.<kind>`).
+    pub const KINDS: &'static [&'static str] = <Self as strum::VariantNames>::VARIANTS;
+
     /// The status now of the system whose wiring is `w` and mission `m`
     /// ([`System::status`](super::System::status)).
     pub fn of(w: &Wiring, m: &Mission) -> Self {

@@ -176,7 +176,8 @@ pub struct TelemetryView {
     /// page ties its notices to.
     pub status_kind: String,
     /// Its fields (`component`, `reason`, `by`, `direction`, `retrying`, `v_cmd`, …), so the
-    /// page can say the status in its own language with the same details.
+    /// page can say the status in its own language with the same details; and `paused:
+    /// true` while the session's clock is paused (a cause the status says, `status.paused`).
     #[cfg_attr(feature = "typescript", ts(type = "Record<string, unknown>"))]
     pub status_fields: serde_json::Map<String, serde_json::Value>,
     /// Whether the robot has arrived at the goal.
@@ -199,9 +200,10 @@ pub struct TelemetryView {
     pub direction: DirectionView,
     /// Distance from the robot to the goal \[m\] (`null` without a goal).
     pub distance_to_goal: Option<f64>,
-    /// Actual speed \[m/s\] (the last sample).
+    /// Measured speed \[m/s\]: the physics' motion now (`Measured`), 0 while it does not
+    /// execute.
     pub v: f64,
-    /// Actual turn rate \[rad/s\].
+    /// Measured turn rate \[rad/s\] (as `v`).
     pub w: f64,
     /// Commanded speed \[m/s\].
     pub v_cmd: f64,
