@@ -4,13 +4,15 @@
 //! - [`alloc`]: a counting allocator (a binary installs it) for allocation bounds and memory;
 //! - [`rng`]: the tools' seeded random numbers (the core reads none);
 //! - [`fuzz`]: the fuzzer — one target per reader and per kind of hostile call;
-//! - [`soak`]: hours of simulated closed loop with random goals and map edits.
+//! - [`soak`]: hours of simulated closed loop with random goals and map edits;
+//! - [`scenario_file`]: the scenario file's JSON Schema and the check of a file against it.
 //!
 //! The external data (`../shared/data`, or `$RTNAV_DATA`) is found by `rtnav::data`.
 
 pub mod alloc;
 pub mod fuzz;
 pub mod rng;
+pub mod scenario_file;
 pub mod soak;
 
 use std::path::{Path, PathBuf};
