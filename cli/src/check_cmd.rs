@@ -280,18 +280,13 @@ fn judge_guarded(
     )
 }
 
-/// `rtnav check` (module documentation).
-pub(super) fn check(args: CheckArgs) -> CliResult<ExitCode> {
-    let (scenario, resolver) = load(&args.scenario, args.root.clone())?;
-    let exercise = scenario
-        .exercise
-        .clone()
-        .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?;
-    // No hand-in: the exercise as the scenario stands (nothing changed).
-    if args.paths.is_empty() {
-        let status = check_exercise(&scenario, &resolver, None, &[]).map_err(|e| e.to_string())?;
-        return one(&args, &scenario, judged(Path::new("(none)"), status));
-    }
+/// Every hand-in `args` names, judged in parallel, in path order; and whether they are a
+/// class (several, or a folder) rather than one file.
+fn judge_all(
+    args: &CheckArgs,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+) -> CliResult<(Vec<Row>, bool)> {
     let files = hand_ins(&args.paths, args.kind)?;
     if files.is_empty() {
         return Err(format!(
@@ -312,12 +307,32 @@ pub(super) fn check(args: CheckArgs) -> CliResult<ExitCode> {
         .num_threads(args.jobs.unwrap_or(0))
         .build()
         .map_err(|e| e.to_string())?;
-    let rows: Vec<Row> = pool.install(|| {
+    let rows = pool.install(|| {
         files
             .par_iter()
-            .map(|f| judge_guarded(f, args.kind, &scenario, &resolver))
-            .collect::<Result<_, _>>()
+            .map(|f| judge_guarded(f, args.kind, scenario, resolver))
+            .collect::<Result<Vec<_>, _>>()
     })?;
+    Ok((rows, class))
+}
+
+/// `rtnav check` (module documentation).
+pub(super) fn check(args: CheckArgs) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(&args.scenario, args.root.clone())?;
+    let exercise = scenario
+        .exercise
+        .clone()
+        .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?;
+    let (rows, class) = if args.paths.is_empty() {
+        // No hand-in: the exercise as the scenario stands (nothing changed).
+        let status = check_exercise(&scenario, &resolver, None, &[]).map_err(|e| e.to_string())?;
+        (
+            vec![judged(Path::new("(the scenario as it stands)"), status)],
+            false,
+        )
+    } else {
+        judge_all(&args, &scenario, &resolver)?
+    };
     let columns = columns(&exercise.checks);
     if let Some(csv) = &args.csv {
         std::fs::write(csv, csv_text(&columns, &rows))
