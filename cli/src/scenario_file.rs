@@ -71,10 +71,8 @@ fn plain(doc: &str) -> String {
             Some(end) => {
                 out.push_str(&after[..=end]);
                 rest = &after[end + 2..];
-                if rest.starts_with('(') {
-                    if let Some(close) = rest.find(')') {
-                        rest = &rest[close + 1..];
-                    }
+                if let (true, Some(close)) = (rest.starts_with('('), rest.find(')')) {
+                    rest = &rest[close + 1..];
                 }
             }
             None => {
