@@ -7,12 +7,14 @@
 //! - [`soak`]: hours of simulated closed loop with random goals and map edits;
 //! - [`words`]: the command line's words for the core's facts, from the page's English
 //!   catalogue.
+//! - [`scenario_file`]: the scenario file's JSON Schema and the check of a file against it.
 //!
 //! The external data (`../shared/data`, or `$RTNAV_DATA`) is found by `rtnav::data`.
 
 pub mod alloc;
 pub mod fuzz;
 pub mod rng;
+pub mod scenario_file;
 pub mod soak;
 pub mod words;
 

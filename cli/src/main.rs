@@ -12,6 +12,9 @@
 //!     --b LocalPathPlanning.PostureConsiderationLevel=85 --png compare.png
 //! rtnav check fixtures/scenarios/ex_door_dmin.json --conf my.conf   # exit 0 pass, 1 fail
 //! rtnav check fixtures/scenarios/ex_fault_recovery.json --replay run.rtnav.json
+//! rtnav check fixtures/scenarios/ex_door_dmin.json --replay class/ --csv verdicts.csv
+//! rtnav scenario check fixtures/scenarios/ex_door_dmin.json   # a new exercise, checked
+//! rtnav scenario schema > docs/scenario.schema.json
 //! rtnav system fixtures/scenarios/open_field.json --dot | dot -Tsvg > system.svg
 //! rtnav system fixtures/scenarios/open_field.json --json --until 5
 //! rtnav fuzz --seconds 60                 # every fuzz target, 60 s in all
@@ -46,13 +49,15 @@ use rtnav::components::FIELD_CELLS_PER_EXECUTION;
 use rtnav::data::RepoResolver;
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::system::{
-    BuildOptions, EventKind, FileResolver, OutcomeKind, Replay, Scenario, ScenarioRun, Session,
-    Setup, System, Verdict, check_exercise, setup,
+    BuildOptions, EventKind, FileResolver, OutcomeKind, Scenario, ScenarioRun, Session, Setup,
+    System, setup,
 };
 use rtnav_cli::words::Words;
 use rtnav_cli::{alloc, fuzz, soak};
 
+mod check_cmd;
 mod replay_cmd;
+mod scenario_cmd;
 
 // Counts allocations: the fuzzer's allocation bounds and the soak's memory figures.
 #[global_allocator]
@@ -162,25 +167,45 @@ enum Command {
         #[arg(long, default_value = "1200x800", value_parser = parse_size)]
         size: (u32, u32),
     },
-    /// Do a scenario's exercise with a configuration handed in and print the checklist and
-    /// the verdict. Exits 0 when every check passes, 1 when one fails.
+    /// Do a scenario's exercise with the hand-ins of one student or of a whole class and
+    /// print the verdicts. One hand-in (a file): its checklist and verdict. Several, or a
+    /// folder (its *.conf files with --conf, its *.json files with --replay, sorted): one
+    /// table, a row per file — verdict, each check's measured value with its unit, and why
+    /// when it did not pass. A file that cannot be judged (not a replay of this scenario, of
+    /// another version, unreadable, or whose run does not reproduce its recorded trace) is
+    /// a REFUSED row with the reason. Exit code: 0 when every hand-in passed; 1 when one
+    /// failed, was unfinished or was refused; 2 for a usage error (scenario unreadable or
+    /// without an exercise, no hand-in found, CSV not writable).
     Check {
         /// The scenario file (JSON) with an exercise.
         scenario: PathBuf,
-        /// The student's configuration: an OpenRTM `.conf` bundle as the page saves it
-        /// (components or parameters left out keep the scenario's values).
-        #[arg(long)]
-        conf: Option<PathBuf>,
-        /// The student's run handed in as a replay (`*.rtnav.json`, downloaded from the page):
-        /// its set-up and every request at its time; checked as it was recorded.
-        #[arg(long, conflicts_with = "conf")]
-        replay: Option<PathBuf>,
+        /// Configurations handed in, files or folders: OpenRTM `.conf` bundles as the page
+        /// saves them (components or parameters left out keep the scenario's values).
+        /// Without --conf and --replay: the exercise as the scenario stands.
+        #[arg(long, num_args = 1.., value_name = "FILE_OR_DIR")]
+        conf: Vec<PathBuf>,
+        /// Runs handed in as replays (`*.rtnav.json`, downloaded from the page), files or
+        /// folders: each checked as it was recorded, after its run reproduced its recorded
+        /// trace.
+        #[arg(long, num_args = 1.., value_name = "FILE_OR_DIR", conflicts_with = "conf")]
+        replay: Vec<PathBuf>,
         /// The folder the scenario's paths are relative to.
         #[arg(long)]
         root: Option<PathBuf>,
-        /// Print the result as one line of JSON instead.
+        /// Print the result of one hand-in as one line of JSON instead.
         #[arg(long)]
         json: bool,
+        /// Write the table (one row per hand-in) here as CSV.
+        #[arg(long, value_name = "PATH")]
+        csv: Option<PathBuf>,
+        /// Hand-ins checked at once (default: one per core).
+        #[arg(long, value_name = "N")]
+        jobs: Option<usize>,
+    },
+    /// Scenario files: check one, or print their JSON Schema (docs/authoring.md).
+    Scenario {
+        #[command(subcommand)]
+        action: ScenarioAction,
     },
     /// Print the system's description — components, ports, types, connections — as
     /// Graphviz dot (default) or JSON.
@@ -247,6 +272,23 @@ enum Command {
         #[arg(long)]
         root: Option<PathBuf>,
     },
+}
+
+#[derive(Debug, Subcommand)]
+enum ScenarioAction {
+    /// Check a scenario file: against the schema (each problem with its place in the file:
+    /// path, line and column), then as the core reads it (the map loads, the start and the
+    /// goal are on the map and free, the system sets up and plans, the exercise's
+    /// parameters exist). Exits 0 when right, 1 when wrong, 2 when unreadable.
+    Check {
+        /// The scenario file (JSON).
+        file: PathBuf,
+        /// The folder the scenario's paths are relative to.
+        #[arg(long)]
+        root: Option<PathBuf>,
+    },
+    /// Print the JSON Schema of scenario files (docs/scenario.schema.json).
+    Schema,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -317,7 +359,28 @@ fn main() -> ExitCode {
             replay,
             root,
             json,
-        } => check(&scenario, conf.as_deref(), replay.as_deref(), root, json),
+            csv,
+            jobs,
+        } => {
+            let (kind, paths) = if replay.is_empty() {
+                (check_cmd::HandIn::Conf, conf)
+            } else {
+                (check_cmd::HandIn::Replay, replay)
+            };
+            check_cmd::check(check_cmd::CheckArgs {
+                scenario,
+                kind,
+                paths,
+                root,
+                json,
+                csv,
+                jobs,
+            })
+        }
+        Command::Scenario { action } => match action {
+            ScenarioAction::Check { file, root } => scenario_cmd::check(&file, root),
+            ScenarioAction::Schema => scenario_cmd::schema(),
+        },
         Command::System {
             scenario,
             dot: _,
@@ -557,62 +620,6 @@ fn inspect(path: &Path, (x, y): (i64, i64), root: Option<PathBuf>) -> CliResult<
     let json = serde_json::to_string(&cell).map_err(|e| e.to_string())?;
     println!("{json}");
     Ok(ExitCode::SUCCESS)
-}
-
-fn check(
-    path: &Path,
-    conf: Option<&Path>,
-    replay: Option<&Path>,
-    root: Option<PathBuf>,
-    json: bool,
-) -> CliResult<ExitCode> {
-    let (scenario, resolver) = load(path, root)?;
-    let read = |p: &Path| {
-        std::fs::read_to_string(p).map_err(|e| format!("cannot read `{}`: {e}", p.display()))
-    };
-    let status = match replay {
-        Some(file) => {
-            // The run as recorded (the page's Download replay), to its recorded end.
-            let run = Replay::from_json(&read(file)?)
-                .map_err(|e| format!("`{}`: {e}", file.display()))?;
-            if run.setup.scenario != scenario.name {
-                return Err(format!(
-                    "`{}` is a replay of scenario `{}`, not of `{}`",
-                    file.display(),
-                    run.setup.scenario,
-                    scenario.name
-                ));
-            }
-            let mut session = Session::new().map_err(|e| e.to_string())?;
-            session
-                .load_scenario(scenario.clone(), &resolver)
-                .map_err(|e| e.to_string())?;
-            session
-                .load_replay(&run)
-                .map_err(|e| format!("`{}`: {e}", file.display()))?;
-            session
-                .exercise()
-                .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?
-        }
-        None => {
-            let text = conf.map(read).transpose()?;
-            check_exercise(&scenario, &resolver, text.as_deref(), &[]).map_err(|e| e.to_string())?
-        }
-    };
-    if json {
-        println!(
-            "{}",
-            serde_json::to_string(&status).map_err(|e| e.to_string())?
-        );
-    } else {
-        println!("scenario {}", scenario.name);
-        println!("{status}");
-    }
-    Ok(if status.verdict == Verdict::Passed {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
 }
 
 fn describe(

@@ -3,7 +3,8 @@
 //! exits 1 and says FAILED; a scenario without an exercise is an error (exit 2). Seed 003's
 //! exercise is done with Reset and Activate, not with a configuration: handed in without
 //! them it fails (its solution is checked in `core/tests/exercises.rs`), and handed in as a
-//! replay of the run with them (`--replay`) it passes.
+//! replay of the run with them (`--replay`) it passes; a replay of another scenario is
+//! REFUSED. A class of hand-ins at once: `cli/tests/class_check.rs`.
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -33,7 +34,7 @@ fn check(scenario: &str, conf: Option<&str>) -> (i32, String) {
     (out.status.code().unwrap_or(-1), text)
 }
 
-const BY_CONF: [&str; 7] = [
+const BY_CONF: [&str; 8] = [
     "ex_parking_posture",
     "ex_route_remake",
     "ex_door_dmin",
@@ -41,6 +42,7 @@ const BY_CONF: [&str; 7] = [
     "ex_backward_dock",
     "ex_pd_gains",
     "ex_model_offset",
+    "ex_speed_limit",
 ];
 
 #[test]
@@ -152,18 +154,17 @@ fn the_fault_exercise_handed_in_as_a_replay_is_checked_as_recorded() {
     let (code, text) = check_replay(&not_done);
     assert_eq!(code, 1, "not recovered:\n{text}");
     assert!(text.contains("verdict  FAILED"), "{text}");
-    // A replay of another scenario is an error, named.
+    // A replay of another scenario is refused, with the reason (exit 1: not a pass).
     let out = Command::new(env!("CARGO_BIN_EXE_rtnav"))
         .current_dir(root())
         .args(["check", "fixtures/scenarios/ex_pd_gains.json", "--replay"])
         .arg(&done)
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    assert!(
-        String::from_utf8_lossy(&out.stderr)
-            .contains("is a replay of scenario `ex_fault_recovery`")
-    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains(
+        "verdict  REFUSED: a replay of scenario `ex_fault_recovery`, not of `ex_pd_gains`"
+    ));
     for f in [done, not_done] {
         std::fs::remove_file(f).unwrap();
     }

@@ -1,7 +1,7 @@
 //! `rtnav replay` and `rtnav compare`: a replay recorded by a session reproduces
 //! its trace hash from the command line (PNG and CSV written); a tampered hash exits 1, a
 //! file of another version exits 2 with the reason, and so does a kept hand-in of a scenario
-//! that has changed since; PostureConsiderationLevel 0 vs 85 on
+//! that has changed since (which `rtnav check` refuses, exit 1); PostureConsiderationLevel 0 vs 85 on
 //! parking_wall prints different arrival headings.
 
 use std::path::{Path, PathBuf};
@@ -134,10 +134,14 @@ fn a_kept_hand_in_of_a_changed_scenario_is_refused_with_that_reason() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains(reason), "{err}");
     let scenario = format!("{root}/fixtures/scenarios/ex_fault_recovery.json");
+    // `rtnav check` judges hand-ins: this one is REFUSED, with the reason (exit 1).
     let out = rtnav(&["check", &scenario, "--replay", hand_in, "--root", root]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains(reason), "{err}");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("verdict  REFUSED: ") && text.contains(reason),
+        "{text}"
+    );
     // The same hand-in on the repository's scenario replays, and passes.
     let out = rtnav(&["replay", hand_in, "--root", ROOT]);
     assert!(

@@ -12,7 +12,7 @@ use rtnav::system::{
     check_exercise,
 };
 
-const EXERCISES: [&str; 8] = [
+const EXERCISES: [&str; 9] = [
     "ex_parking_posture",
     "ex_route_remake",
     "ex_door_dmin",
@@ -21,6 +21,7 @@ const EXERCISES: [&str; 8] = [
     "ex_pd_gains",
     "ex_model_offset",
     "ex_fault_recovery",
+    "ex_speed_limit",
 ];
 
 fn scenario(name: &str) -> Scenario {
@@ -57,7 +58,7 @@ fn failed(name: &str, status: &ExerciseStatus, which: fn(&Check) -> bool) {
 }
 
 #[test]
-fn there_are_eight_exercises_over_the_three_seeds() {
+fn every_exercise_names_its_seed_and_is_listed() {
     for name in EXERCISES {
         let s = scenario(name);
         let e = s.exercise.as_ref().unwrap();
@@ -117,6 +118,7 @@ conf_exercise!(
     Check::BackwardDistance { .. }
 );
 conf_exercise!(pd_gains, "ex_pd_gains", Check::MaxOvershoot { .. });
+conf_exercise!(speed_limit, "ex_speed_limit", Check::MaxOvershoot { .. });
 conf_exercise!(
     model_offset,
     "ex_model_offset",

@@ -9,6 +9,7 @@ use crate::errors::SystemError;
 /// One of the system's components (spec §0). The order of [`ComponentKind::ALL`] is the
 /// attachment order, which is the order they run in a tick (see `crate::system`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 pub enum ComponentKind {
     /// Holds the loaded map; sends `SetMap`.

@@ -26,6 +26,7 @@ fn hz_10() -> f64 {
 /// and the physics' period a whole number of its 1 ms steps ([`Rates::check`], when a
 /// scenario is read and when the system is built).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Rates {
     /// MapBuilder. Default 10 Hz.

@@ -56,6 +56,7 @@ use crate::map::formats::{json, movingai, ros};
 
 /// A scenario file (see the module documentation).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Scenario {
     /// Short name (the file's stem).
@@ -93,6 +94,7 @@ pub struct Scenario {
 
 /// Where the map comes from.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(tag = "format", rename_all = "snake_case", deny_unknown_fields)]
 pub enum MapSource {
     /// rtnav's JSON map (`crate::map::formats::json`).
@@ -157,6 +159,7 @@ impl MapSource {
 
 /// What unknown cells of a ROS map become.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum UnknownSpec {
     /// Obstacles (the default).
@@ -168,6 +171,7 @@ pub enum UnknownSpec {
 
 /// A pose in metres and degrees.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PoseSpec {
     /// X \[m\].
@@ -193,6 +197,7 @@ impl PoseSpec {
 
 /// `forward` or `backward`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum DirectionSpec {
     /// Direction 1.
@@ -214,6 +219,7 @@ impl DirectionSpec {
 
 /// A timed event.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum ScenarioEvent {
     /// Cells change (MapMaintenance sends them at `at`).
@@ -281,6 +287,7 @@ impl ScenarioEvent {
 
 /// A rectangle in metres.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct BoxSpec {
     /// `[min, max]` in x \[m\].
@@ -291,6 +298,7 @@ pub struct BoxSpec {
 
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
 #[serde(rename_all = "snake_case")]
 pub enum OutcomeKind {
@@ -313,6 +321,7 @@ pub enum OutcomeKind {
 
 /// What a scenario expects.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Expectation {
     /// How it ends.

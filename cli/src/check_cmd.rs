@@ -1,0 +1,579 @@
+//! `rtnav check SCENARIO [--conf F… | --replay F…]`: a scenario's exercise judged for one
+//! hand-in or for a whole class of them.
+//!
+//! Each `--conf` / `--replay` argument is a file or a folder; a folder stands for its
+//! `*.conf` (with `--conf`) or `*.json` (with `--replay`) files. The hand-ins are checked in
+//! parallel, one per core (`--jobs`), and reported in the order of their paths, sorted, so
+//! the table is the same on every machine and at every run.
+//!
+//! - One hand-in named as a file: the checklist and the verdict, as the page shows them (or
+//!   one line of JSON with `--json`).
+//! - Otherwise (several, or a folder): one table — file, verdict, each check's measured value
+//!   with its unit and whether it passed, when the exercise ended, and the reason of a
+//!   verdict other than PASSED — and, with `--csv PATH`, the same rows as CSV.
+//!
+//! A hand-in that cannot be judged is a row with the reason, never an error of the command:
+//! a file that cannot be read or does not parse, a replay of another scenario, of another
+//! content of this scenario or of another behaviour version, a replay whose run does not
+//! reproduce its recorded trace hash (a file edited by hand), a `.conf` the core refuses.
+//! A replay that ends before the exercise ends is UNFINISHED.
+//!
+//! Exit code: 0 when every hand-in passed, 1 when one failed, was unfinished or was refused,
+//! 2 for a usage error (the scenario unreadable or without an exercise, no hand-in found, the
+//! CSV not writable).
+
+use std::fmt::Write as _;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use rayon::prelude::*;
+use rtnav::data::RepoResolver;
+use rtnav::present::number;
+use rtnav::system::{
+    Check, CheckState, ExerciseStatus, Replay, Scenario, Session, Unit, Verdict, check_exercise,
+};
+
+use super::{CliResult, load};
+
+/// What is handed in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum HandIn {
+    /// OpenRTM `.conf` bundles, as the page saves them.
+    Conf,
+    /// Replays (`*.rtnav.json`), as the page downloads them.
+    Replay,
+}
+
+impl HandIn {
+    /// The file name ending a folder's hand-ins have.
+    fn extension(self) -> &'static str {
+        match self {
+            Self::Conf => "conf",
+            Self::Replay => "json",
+        }
+    }
+}
+
+/// The options of `rtnav check`.
+#[derive(Debug)]
+pub(super) struct CheckArgs {
+    /// The scenario file.
+    pub scenario: PathBuf,
+    /// What the files are.
+    pub kind: HandIn,
+    /// Files and folders named.
+    pub paths: Vec<PathBuf>,
+    /// `--root`.
+    pub root: Option<PathBuf>,
+    /// `--json` (one hand-in).
+    pub json: bool,
+    /// `--csv PATH`.
+    pub csv: Option<PathBuf>,
+    /// `--jobs N` (default: every core).
+    pub jobs: Option<usize>,
+}
+
+/// A hand-in's verdict in the table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum RowVerdict {
+    Passed,
+    Failed,
+    Unfinished,
+    Refused,
+}
+
+impl RowVerdict {
+    fn word(self) -> &'static str {
+        match self {
+            Self::Passed => "PASSED",
+            Self::Failed => "FAILED",
+            Self::Unfinished => "UNFINISHED",
+            Self::Refused => "REFUSED",
+        }
+    }
+}
+
+/// One hand-in judged.
+#[derive(Debug)]
+struct Row {
+    file: PathBuf,
+    verdict: RowVerdict,
+    /// Why, when not PASSED (the failed checks, or why it was not judged).
+    reason: String,
+    /// The checklist, when the hand-in was judged.
+    status: Option<ExerciseStatus>,
+}
+
+/// The hand-ins `paths` name: files as given, folders' files with `kind`'s ending; sorted by
+/// path, each once. An error for a path that does not exist or a folder that cannot be read.
+fn hand_ins(paths: &[PathBuf], kind: HandIn) -> CliResult<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for path in paths {
+        if path.is_dir() {
+            let entries = std::fs::read_dir(path)
+                .map_err(|e| format!("cannot read folder `{}`: {e}", path.display()))?;
+            for entry in entries {
+                let entry =
+                    entry.map_err(|e| format!("cannot read folder `{}`: {e}", path.display()))?;
+                let file = entry.path();
+                let wanted = file.is_file()
+                    && file
+                        .extension()
+                        .is_some_and(|x| x.eq_ignore_ascii_case(kind.extension()));
+                if wanted {
+                    files.push(file);
+                }
+            }
+        } else if path.exists() {
+            files.push(path.clone());
+        } else {
+            return Err(format!("`{}`: no such file or folder", path.display()));
+        }
+    }
+    files.sort();
+    files.dedup();
+    Ok(files)
+}
+
+/// The failed checks, in words.
+fn failures(status: &ExerciseStatus) -> String {
+    status
+        .checks
+        .iter()
+        .filter(|c| c.state == CheckState::Failed)
+        .map(|c| {
+            let mut s = c.check.to_string();
+            if !c.changed.is_empty() {
+                let _ = write!(s, " (changed: {})", c.changed.join(", "));
+            }
+            s
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+fn judged(file: &Path, status: ExerciseStatus) -> Row {
+    let (verdict, reason) = match status.verdict {
+        Verdict::Passed => (RowVerdict::Passed, String::new()),
+        Verdict::Failed => (RowVerdict::Failed, format!("failed: {}", failures(&status))),
+        Verdict::Waiting => (
+            RowVerdict::Unfinished,
+            "the drive never started (Activate all)".to_owned(),
+        ),
+        Verdict::Running => (
+            RowVerdict::Unfinished,
+            "the recording ends before the exercise ends".to_owned(),
+        ),
+    };
+    Row {
+        file: file.to_path_buf(),
+        verdict,
+        reason,
+        status: Some(status),
+    }
+}
+
+fn refused(file: &Path, reason: impl Into<String>) -> Row {
+    Row {
+        file: file.to_path_buf(),
+        verdict: RowVerdict::Refused,
+        reason: reason.into(),
+        status: None,
+    }
+}
+
+/// Judges one replay: loaded on the scenario as the page loads it, to its recorded end;
+/// refused unless its run reproduces the recorded trace.
+fn judge_replay(
+    file: &Path,
+    text: &str,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+) -> Result<Row, String> {
+    let run = match Replay::from_json(text) {
+        Ok(run) => run,
+        Err(e) => return Ok(refused(file, e.to_string())),
+    };
+    if run.setup.scenario != scenario.name {
+        return Ok(refused(
+            file,
+            format!(
+                "a replay of scenario `{}`, not of `{}`",
+                rtnav::present::excerpt(&run.setup.scenario),
+                scenario.name
+            ),
+        ));
+    }
+    let mut session = Session::new().map_err(|e| e.to_string())?;
+    session
+        .load_scenario(scenario.clone(), resolver)
+        .map_err(|e| e.to_string())?;
+    let check = match session.load_replay(&run) {
+        Ok(check) => check,
+        Err(e) => return Ok(refused(file, e.to_string())),
+    };
+    if !check.matches {
+        return Ok(refused(
+            file,
+            format!(
+                "does not reproduce its recorded trace (trace hash {}…, recorded {}…; {} samples, \
+                 recorded {}): the file was changed after it was recorded",
+                &check.hash[..12],
+                check
+                    .expected_hash
+                    .get(..12)
+                    .unwrap_or(&check.expected_hash),
+                check.samples,
+                check.expected_samples
+            ),
+        ));
+    }
+    let status = session
+        .exercise()
+        .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?;
+    Ok(judged(file, status))
+}
+
+/// Judges one hand-in. `Err` only for what is not the hand-in's fault (the scenario).
+fn judge(
+    file: &Path,
+    kind: HandIn,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+) -> Result<Row, String> {
+    let bytes = match std::fs::read(file) {
+        Ok(b) => b,
+        Err(e) => return Ok(refused(file, format!("cannot read: {e}"))),
+    };
+    let Ok(text) = String::from_utf8(bytes) else {
+        return Ok(refused(file, "not UTF-8 text"));
+    };
+    match kind {
+        HandIn::Replay => judge_replay(file, &text, scenario, resolver),
+        HandIn::Conf => Ok(match check_exercise(scenario, resolver, Some(&text), &[]) {
+            Ok(status) => judged(file, status),
+            Err(e) => refused(file, e.to_string()),
+        }),
+    }
+}
+
+/// [`judge`], with a panic (a defect of the core) reported as the row's reason.
+fn judge_guarded(
+    file: &Path,
+    kind: HandIn,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+) -> Result<Row, String> {
+    catch_unwind(AssertUnwindSafe(|| judge(file, kind, scenario, resolver))).unwrap_or_else(
+        |panic| {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_owned())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Ok(refused(
+                file,
+                format!("rtnav failed on this file (a defect, please report it): {what}"),
+            ))
+        },
+    )
+}
+
+/// Every hand-in `args` names, judged in parallel, in path order; and whether they are a
+/// class (several, or a folder) rather than one file.
+fn judge_all(
+    args: &CheckArgs,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+) -> CliResult<(Vec<Row>, bool)> {
+    let files = hand_ins(&args.paths, args.kind)?;
+    if files.is_empty() {
+        return Err(format!(
+            "no hand-ins: no *.{} file in {}",
+            args.kind.extension(),
+            args.paths
+                .iter()
+                .map(|p| format!("`{}`", p.display()))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
+    let class = files.len() > 1 || args.paths.iter().any(|p| p.is_dir());
+    if class && args.json {
+        return Err("--json prints one hand-in; for a class use the table or --csv".to_owned());
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.jobs.unwrap_or(0))
+        .build()
+        .map_err(|e| e.to_string())?;
+    let rows = pool.install(|| {
+        files
+            .par_iter()
+            .map(|f| judge_guarded(f, args.kind, scenario, resolver))
+            .collect::<Result<Vec<_>, _>>()
+    })?;
+    Ok((rows, class))
+}
+
+/// `rtnav check` (module documentation).
+pub(super) fn check(args: CheckArgs) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(&args.scenario, args.root.clone())?;
+    let exercise = scenario
+        .exercise
+        .clone()
+        .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?;
+    let (rows, class) = if args.paths.is_empty() {
+        // No hand-in: the exercise as the scenario stands (nothing changed).
+        let status = check_exercise(&scenario, &resolver, None, &[]).map_err(|e| e.to_string())?;
+        (
+            vec![judged(Path::new("(the scenario as it stands)"), status)],
+            false,
+        )
+    } else {
+        judge_all(&args, &scenario, &resolver)?
+    };
+    let columns = columns(&exercise.checks);
+    if let Some(csv) = &args.csv {
+        std::fs::write(csv, csv_text(&columns, &rows))
+            .map_err(|e| format!("cannot write `{}`: {e}", csv.display()))?;
+    }
+    if !class {
+        let row = rows.into_iter().next().ok_or("no hand-in")?;
+        return one(&args, &scenario, row);
+    }
+    println!("scenario {}", scenario.name);
+    print!("{}", table(&columns, &rows));
+    let passed = rows
+        .iter()
+        .filter(|r| r.verdict == RowVerdict::Passed)
+        .count();
+    println!("{passed} of {} passed", rows.len());
+    Ok(exit(rows.iter().all(|r| r.verdict == RowVerdict::Passed)))
+}
+
+fn exit(all_passed: bool) -> ExitCode {
+    if all_passed {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+/// One hand-in: the checklist (or why it was refused).
+fn one(args: &CheckArgs, scenario: &Scenario, row: Row) -> CliResult<ExitCode> {
+    let passed = row.verdict == RowVerdict::Passed;
+    match (&row.status, args.json) {
+        (Some(status), true) => println!(
+            "{}",
+            serde_json::to_string(status).map_err(|e| e.to_string())?
+        ),
+        (None, true) => println!(
+            "{}",
+            serde_json::json!({
+                "file": row.file.display().to_string(),
+                "verdict": "refused",
+                "reason": row.reason,
+            })
+        ),
+        (Some(status), false) => {
+            println!("scenario {}", scenario.name);
+            println!("{status}");
+            if row.verdict == RowVerdict::Unfinished {
+                println!("         ({})", row.reason);
+            }
+        }
+        (None, false) => {
+            println!("scenario {}", scenario.name);
+            println!("file     {}", row.file.display());
+            println!("verdict  REFUSED: {}", row.reason);
+        }
+    }
+    Ok(exit(passed))
+}
+
+/// A check's column: its name (the file's `check` key, numbered when it repeats) and unit.
+struct Column {
+    name: String,
+    unit: Option<Unit>,
+}
+
+impl Column {
+    /// The unit's short name (`s`, `deg`, `m`, `plans`, `percent`: as the core writes it in
+    /// JSON).
+    fn unit_name(&self) -> Option<String> {
+        let value = serde_json::to_value(self.unit?).ok()?;
+        value.as_str().map(str::to_owned)
+    }
+}
+
+fn columns(checks: &[Check]) -> Vec<Column> {
+    let mut out: Vec<Column> = Vec::new();
+    let all = checks.iter().cloned().chain([Check::OnlyAllowed]);
+    for check in all {
+        let key = serde_json::to_value(&check)
+            .ok()
+            .and_then(|v| v.get("check")?.as_str().map(str::to_owned))
+            .unwrap_or_else(|| "check".to_owned());
+        let seen = out
+            .iter()
+            .filter(|c| c.name == key || c.name.starts_with(&format!("{key}#")))
+            .count();
+        let name = if seen == 0 {
+            key
+        } else {
+            format!("{key}#{}", seen + 1)
+        };
+        out.push(Column {
+            name,
+            unit: check.unit(),
+        });
+    }
+    out
+}
+
+fn state_word(state: CheckState) -> &'static str {
+    match state {
+        CheckState::Open => "open",
+        CheckState::Passed => "pass",
+        CheckState::Failed => "FAIL",
+    }
+}
+
+/// A cell of the table: `pass 12.4 s`, `FAIL 0.41 m`, `pass` (nothing measured).
+fn cell(row: &Row, i: usize, column: &Column) -> String {
+    let Some(c) = row.status.as_ref().and_then(|s| s.checks.get(i)) else {
+        return "-".to_owned();
+    };
+    let mut s = state_word(c.state).to_owned();
+    if let Some(m) = c.measured {
+        let _ = write!(s, " {}", number(round3(m)));
+        if let Some(u) = column.unit {
+            let _ = write!(s, "{u}");
+        }
+    }
+    s
+}
+
+fn round3(v: f64) -> f64 {
+    libm::round(v * 1000.0) / 1000.0
+}
+
+fn ended(row: &Row) -> String {
+    row.status
+        .as_ref()
+        .and_then(|s| s.ended_after)
+        .map_or_else(|| "-".to_owned(), |t| format!("{} s", number(round3(t))))
+}
+
+/// The table: a header, a rule, one line per row; then what each column checks.
+fn table(columns: &[Column], rows: &[Row]) -> String {
+    let mut header = vec!["file".to_owned(), "verdict".to_owned()];
+    header.extend(columns.iter().map(|c| match c.unit_name() {
+        Some(u) => format!("{} [{u}]", c.name),
+        None => c.name.clone(),
+    }));
+    header.push("ended".to_owned());
+    header.push("reason".to_owned());
+    let lines: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            let mut line = vec![r.file.display().to_string(), r.verdict.word().to_owned()];
+            line.extend(columns.iter().enumerate().map(|(i, c)| cell(r, i, c)));
+            line.push(ended(r));
+            line.push(r.reason.clone());
+            line
+        })
+        .collect();
+    let widths: Vec<usize> = (0..header.len())
+        .map(|i| {
+            lines
+                .iter()
+                .map(|l| l[i].chars().count())
+                .chain([header[i].chars().count()])
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    let mut put = |cells: &[String]| {
+        let last = cells.len() - 1;
+        let text: Vec<String> = cells
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                if i == last {
+                    c.clone()
+                } else {
+                    let pad = widths[i].saturating_sub(c.chars().count());
+                    format!("{c}{}", " ".repeat(pad))
+                }
+            })
+            .collect();
+        let _ = writeln!(out, "{}", text.join("  ").trim_end());
+    };
+    put(&header);
+    let rule: Vec<String> = widths.iter().map(|w| "-".repeat((*w).max(1))).collect();
+    put(&rule);
+    for line in &lines {
+        put(line);
+    }
+    out
+}
+
+/// A CSV field, quoted when it must be (RFC 4180).
+fn field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_owned()
+    }
+}
+
+/// The rows as CSV: `file,verdict`, per check its state (`pass`, `fail`, empty when not
+/// judged) and, for a check that measures, its value in the unit its header names; when the
+/// exercise ended \[s\]; the reason.
+fn csv_text(columns: &[Column], rows: &[Row]) -> String {
+    let mut header = vec!["file".to_owned(), "verdict".to_owned()];
+    for c in columns {
+        header.push(c.name.clone());
+        if let Some(u) = c.unit_name() {
+            header.push(format!("{}_{u}", c.name));
+        }
+    }
+    header.push("ended_s".to_owned());
+    header.push("reason".to_owned());
+    let mut out = header
+        .iter()
+        .map(|h| field(h))
+        .collect::<Vec<_>>()
+        .join(",");
+    out.push('\n');
+    for r in rows {
+        let mut line = vec![
+            r.file.display().to_string(),
+            r.verdict.word().to_lowercase(),
+        ];
+        for (i, c) in columns.iter().enumerate() {
+            let check = r.status.as_ref().and_then(|s| s.checks.get(i));
+            line.push(check.map_or_else(String::new, |k| state_word(k.state).to_lowercase()));
+            if c.unit.is_some() {
+                line.push(
+                    check
+                        .and_then(|k| k.measured)
+                        .map_or_else(String::new, number),
+                );
+            }
+        }
+        line.push(
+            r.status
+                .as_ref()
+                .and_then(|s| s.ended_after)
+                .map_or_else(String::new, number),
+        );
+        line.push(r.reason.clone());
+        out.push_str(&line.iter().map(|f| field(f)).collect::<Vec<_>>().join(","));
+        out.push('\n');
+    }
+    out
+}
