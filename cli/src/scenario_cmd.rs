@@ -16,7 +16,9 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use rtnav::system::{BuildOptions, ComponentKind, OutcomeKind, Scenario, Setup, setup};
+use rtnav::system::{
+    BuildOptions, ComponentKind, OutcomeKind, ParameterWarning, Scenario, Setup, setup,
+};
 use rtnav_cli::scenario_file::{self, SCHEMA_PATH};
 
 use super::{CliResult, find_root};
@@ -166,6 +168,20 @@ fn core_check(path: &Path, text: &str, root: Option<PathBuf>) -> Result<Vec<Stri
                     "exercise: may_change `{name}`: {component} has no parameter `{param}`"
                 ));
             }
+        }
+        // The rule every exercise holds: a value the Parameters tab warns about never
+        // passes. One the scenario sets and the student may not change fails every answer.
+        for warned in ParameterWarning::warned(system.wiring()) {
+            if !exercise.may_change.contains(&warned) {
+                return Err(format!(
+                    "exercise: the Parameters tab warns about {warned} as the scenario sets it, \
+                     and the exercise does not let it change: no answer can pass"
+                ));
+            }
+            lines.push(format!(
+                "note          the Parameters tab warns about {warned} as given: an answer must \
+                 change it"
+            ));
         }
         lines.push(format!(
             "exercise      {} check{}; may change {}",

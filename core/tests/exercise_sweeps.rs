@@ -355,3 +355,17 @@ fn model_offset_passes_within_two_centimetres_and_one_degree() {
         lesson_says: "Angle π/2 (1.5708 rad)",
     });
 }
+
+#[test]
+fn speed_limit_passes_between_in_time_and_within_the_limit() {
+    sweep(&Sweep {
+        scenario: "ex_speed_limit",
+        param: "DriveControl.MaxVelocity",
+        base: &[],
+        values: &[
+            0.1, 0.2, 0.29, 0.3, 0.31, 0.45, 0.59, 0.6, 0.61, 0.7, 1.0, 1.5,
+        ],
+        right: |v| (0.3..=0.6).contains(&v),
+        lesson_says: "Any MaxVelocity from 0.3 to 0.6 m/s is right",
+    });
+}
