@@ -142,7 +142,7 @@ export function fill(text, vars = {}) {
 }
 
 /**
- * The English catalogue (the templates the core's English texts are written from).
+ * The English catalogue (the one English of the page and the command line).
  * @returns {Readonly<Catalogue>}
  */
 export function englishWords() {
