@@ -530,7 +530,8 @@ fn js_number(v: f64) -> String {
 }
 
 /// A placeholder's value as text (`i18n.js`'s `show`): `fmt` empty (as it is; a list joined
-/// with ", "), `.N` (N decimals), `n` (`present::number`) or `deg.N` (radians in degrees).
+/// with ", "), `.N` (N decimals, no minus on a zero), `n` (`present::number`) or `deg.N`
+/// (radians in degrees).
 fn show(v: &Value, fmt: &str) -> String {
     match v {
         Value::Array(items) => items
@@ -564,7 +565,8 @@ fn show(v: &Value, fmt: &str) -> String {
                 .unwrap_or(digits)
                 .parse::<usize>()
                 .unwrap_or(0);
-            format!("{x:.digits$}")
+            // Never "-0.00" (a heading of −1e-17 rad is 0.0°).
+            rtnav::present::fixed(x, digits)
         }
     }
 }

@@ -278,3 +278,24 @@ fn the_command_line_says_each_fact_in_the_words_the_page_says_it() {
         assert!(kinds(f) > 0, "no {f} said");
     }
 }
+
+#[test]
+fn events_never_say_minus_zero() {
+    let words = Words::english();
+    // A heading of −1e-17 rad (a turn that ended at 0) and a distance of −0.
+    let goal_set = words.event(&EventKind::GoalSet {
+        start: Pose::new(-0.001, 1.0, -1e-17),
+        goal: Pose::new(2.0, -0.0, -0.0),
+        direction: Direction::Forward,
+        placed: true,
+    });
+    assert!(!goal_set.contains("-0"), "{goal_set}");
+    assert!(goal_set.contains("0.00"), "{goal_set}");
+    let arrived = words.event(&EventKind::Arrived {
+        pose: Pose::new(1.0, 2.0, -1e-9),
+        position_error: 0.0,
+        heading_error: -1e-9,
+        approach_heading_error: -1e-9,
+    });
+    assert!(!arrived.contains("-0"), "{arrived}");
+}

@@ -147,7 +147,7 @@ fn activate_all_drives_to_the_goal() {
     assert_eq!(events.iter().filter(|e| e.kind == "Arrived").count(), 1);
     let arrived = events.iter().find(|e| e.kind == "Arrived").unwrap();
     assert_eq!(arrived.level, EventLevel::Success);
-    assert!(arrived.text.starts_with("arrived at ("), "{}", arrived.text);
+    assert!(arrived.data["pose"]["x"].is_number(), "{:?}", arrived.data);
 }
 
 #[test]
@@ -288,7 +288,6 @@ fn an_obstacle_painted_on_the_path_is_driven_around() {
     let sent = events.iter().rfind(|e| e.kind == "LocalPlanSent").unwrap();
     // A potential-field plan around it (000 §5.2.4.9).
     assert_eq!(sent.data["replanned"], true);
-    assert!(sent.text.starts_with("local plan sent: "), "{}", sent.text);
     let block: Vec<(usize, usize)> = xs
         .iter()
         .zip(&ys)

@@ -128,26 +128,26 @@ async function waitLogged(page, kind, timeout = 90_000) {
 const logLines = (page) => page.$$eval('#events li', (items) => items.map((i) => [i.dataset.kind, i.querySelector('.text').textContent]));
 
 /**
- * The core's events in the log said again through the English catalogue, from their kinds
- * and fields: [kind, the core's text, the catalogue's], for those that differ. The
- * catalogue's English must be the core's, so its Japanese carries the same numbers written
- * the same way.
+ * The core's events in the log said through the English catalogue, from their kinds and
+ * fields: [kind, what it said] for those it cannot say (no key, or a placeholder left
+ * unfilled). The core hands events over as data; the catalogues are their only words.
  */
-const englishMismatches = (page) => page.evaluate(async () => {
+const unsaidEvents = (page) => page.evaluate(async () => {
   const { sayer } = await import('./js/say.js');
   const { fill, englishWords } = await import('./js/i18n.js');
-  const english = sayer((key, vars) => fill(englishWords()[key] ?? key, vars), (key) => key in englishWords());
+  const words = englishWords();
+  const english = sayer((key, vars) => fill(words[key] ?? key, vars), (key) => key in words);
   const out = [];
-  let compared = 0;
+  let said = 0;
   for (const li of document.querySelectorAll('#events li')) {
     const e = li.rtnavEvent;
     if (!e || e.kind === 'Page') continue;
-    compared++;
-    const again = english.eventText(e);
-    if (again !== e.text) out.push([e.kind, e.text, again]);
+    said++;
+    const text = english.eventText(e);
+    if (!text || text.startsWith('event.') || /\{[\w.]+(?::[\w.]+)?\}/.test(text)) out.push([e.kind, text]);
   }
-  // Nothing compared is a broken check, not a pass.
-  if (compared < 3) out.push(['none', `only ${compared} events compared`, '']);
+  // Nothing said is a broken check, not a pass.
+  if (said < 3) out.push(['none', `only ${said} events said`]);
   return out;
 });
 
@@ -232,7 +232,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     assert.match(seen.planning, /経路計画に失敗/, seen.planning);
     await checkAllTabs(page, names, `${width}×${height}, unreachable`);
     const planningLines = await logLines(page);
-    assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
+    assert.deepEqual(await unsaidEvents(page), [], 'the English catalogue says every event');
 
     // The exercise with a fault injected mid-drive, and everything else on the way.
     await pick(page, 'ex_fault_recovery');
@@ -257,7 +257,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.waitForSelector('#exercise .exercise-verdict:is([data-verdict="passed"], [data-verdict="failed"])', DRIVE);
     await checkAllTabs(page, names, `${width}×${height}, arrived`);
     const lines = [...planningLines, ...await logLines(page)];
-    assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
+    assert.deepEqual(await unsaidEvents(page), [], 'the English catalogue says every event');
 
     // The compare view (at the width that shows it beside the page).
     if (width >= 1000) {
@@ -301,7 +301,7 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.waitForSelector('#components li[data-component="LocalPathPlanning"][data-state="Error"]', WAIT);
     await checkAllTabs(page, names, `${width}×${height}, a bump`);
     lines.push(...await logLines(page));
-    assert.deepEqual(await englishMismatches(page), [], 'the catalogue\'s English is the core\'s');
+    assert.deepEqual(await unsaidEvents(page), [], 'the English catalogue says every event');
 
     // Every kind that happened is said in Japanese in the log (no line as the core wrote it).
     await showTab(page, 'log');

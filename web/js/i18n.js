@@ -84,7 +84,7 @@ export function number(v) {
 
 /**
  * A placeholder's value as text: `fmt` is empty (as it is; a list joined with ", "), `.N`
- * (N decimals, Rust's `{:.N}`), `n` ([`number`]) or `deg.N` (radians in degrees, N decimals).
+ * (N decimals, no minus on a zero), `n` ([`number`]) or `deg.N` (radians in degrees, N decimals).
  * @param {unknown} v
  * @param {string | undefined} fmt
  * @returns {string}
@@ -97,7 +97,9 @@ function show(v, fmt) {
   if (fmt === 'n') return number(v);
   const deg = fmt.startsWith('deg');
   const digits = Number(fmt.replace(/^deg/, '').replace(/^\./, ''));
-  return (deg ? (v * 180) / Math.PI : v).toFixed(digits);
+  const shown = (deg ? (v * 180) / Math.PI : v).toFixed(digits);
+  // Never "-0.00" (a heading of −1e-17 rad is 0.0°), as the core's `present::fixed`.
+  return /^-[0.]+$/.test(shown) ? shown.slice(1) : shown;
 }
 
 /**
@@ -142,7 +144,7 @@ export function fill(text, vars = {}) {
 }
 
 /**
- * The English catalogue (the templates the core's English texts are written from).
+ * The English catalogue (the one English of the page and the command line).
  * @returns {Readonly<Catalogue>}
  */
 export function englishWords() {

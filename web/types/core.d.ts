@@ -454,10 +454,6 @@ kind: string,
  */
 level: EventLevel, 
 /**
- * The core's words for it (without the time).
- */
-text: string, 
-/**
  * The event's fields (`null` for a kind without fields).
  */
 data: Record<string, unknown> | null, };
@@ -789,9 +785,9 @@ t_ns: number,
  */
 kind: MarkKind, 
 /**
- * The event's text.
+ * The event marked (its kind and fields, said by the page as its log says it).
  */
-text: string, };
+event: EventView, };
 
 /**
  * What a mark on the timeline stands for.

@@ -19,7 +19,8 @@ use std::collections::BTreeMap;
 
 use serde::Serialize;
 
-use super::events::EventKind;
+use super::events::{EventKind, SystemEvent};
+use super::views::EventView;
 use super::exercise_watch::ExerciseWatch;
 use super::input::Input;
 use super::record::Record;
@@ -60,13 +61,13 @@ pub struct Mark {
     pub t_ns: u64,
     /// What.
     pub kind: MarkKind,
-    /// The event's text.
-    pub text: String,
+    /// The event marked (its kind and fields, said by the page as its log says it).
+    pub event: EventView,
 }
 
 impl Mark {
-    fn of(time_ns: u64, kind: &EventKind) -> Option<Self> {
-        let mark = match kind {
+    fn of(e: &SystemEvent) -> Option<Self> {
+        let mark = match &e.kind {
             EventKind::GlobalPlan { .. } | EventKind::LocalPlanSent { .. } => MarkKind::Plan,
             EventKind::PlanningFailed { .. } => MarkKind::Failure,
             EventKind::Bump { .. } => MarkKind::Bump,
@@ -75,9 +76,9 @@ impl Mark {
             _ => return None,
         };
         Some(Self {
-            t_ns: time_ns,
+            t_ns: e.time_ns,
             kind: mark,
-            text: kind.to_string(),
+            event: EventView::of(e),
         })
     }
 }
@@ -289,7 +290,7 @@ impl History {
             }
             self.mark_cursor += 1;
             if e.time_ns >= self.horizon_ns
-                && let Some(mark) = Mark::of(e.time_ns, &e.kind)
+                && let Some(mark) = Mark::of(e)
             {
                 self.marks.push(mark);
             }

@@ -131,8 +131,6 @@ pub struct EventView {
     pub kind: String,
     /// How the log colours it.
     pub level: EventLevel,
-    /// The core's words for it (without the time).
-    pub text: String,
     /// The event's fields (`null` for a kind without fields).
     #[cfg_attr(feature = "typescript", ts(type = "Record<string, unknown> | null"))]
     pub data: serde_json::Value,
@@ -154,7 +152,6 @@ impl EventView {
             time_s: e.time_ns as f64 * 1e-9,
             kind,
             level: EventLevel::of(&e.kind),
-            text: e.kind.to_string(),
             data,
         }
     }

@@ -103,10 +103,10 @@ export function createEventLog(root, app) {
    * Adds one entry where its time puts it (newest first; equal times keep their order), or
    * counts a repeat of the condition an entry shows.
    *
-   * @param {{time_s: number, kind: string, level: string, text: string, data?: EventView['data']}} e
+   * @param {{time_s: number, kind: string, level: string, text?: string, data?: EventView['data']}} e
    */
   function add(e) {
-    const text = e.kind === 'Page' ? e.text : eventText(e);
+    const text = e.kind === 'Page' ? e.text ?? '' : eventText(e);
     const key = condition(e, text);
     const again = repeated(key, e);
     if (again) {

@@ -12,7 +12,7 @@ import { Demo } from '../../pkg/rtnav_wasm.js';
 import { el, setText } from '../dom.js';
 import { downloadText } from '../download.js';
 import { t, language } from '../i18n.js';
-import { errorText } from '../say.js';
+import { errorText, eventText } from '../say.js';
 import { scenarioTitle } from '../scenarios.js';
 
 const POLL_MS = 200;
@@ -185,8 +185,8 @@ export function createTimeline(root, app) {
     marks.replaceChildren(...v.marks.map((m) => el('span', {
       class: `timeline-mark mark-${m.kind}`,
       style: `left: ${(100 * (m.t_ns - v.start_ns)) / span}%`,
-      // The core's text of the event is English: shown in English only.
-      title: `${secs(m.t_ns).toFixed(2)} s · ${markTitles[m.kind] ?? m.kind}${language() === 'en' ? `: ${m.text}` : ''}`,
+      // The event marked, said in the page's language as the log says it.
+      title: `${secs(m.t_ns).toFixed(2)} s · ${markTitles[m.kind] ?? m.kind}: ${eventText(m.event)}`,
       dataset: { kind: m.kind, t: String(secs(m.t_ns)) },
     })));
   }
