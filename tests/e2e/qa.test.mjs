@@ -38,7 +38,7 @@ test('in Japanese the status names the component in Error and why; the RTC panel
   await fault(page, 'DriveControl');
   const { text: status } = await shownStatus(page, /^DriveControl0 がエラー状態：注入された故障：.+（リセットで復帰）；ロボットは.+$/, ['component_error']);
   assert.deepEqual(latin(status), [], status);
-  assert.equal(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'Error 状態：実行していない');
+  assert.equal(await page.textContent('#components li[data-component="DriveControl"] .rtc-status'), 'エラー状態：実行していない');
   assert.deepEqual(problems, []);
   await page.close();
 });

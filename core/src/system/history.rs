@@ -20,7 +20,6 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use super::events::{EventKind, SystemEvent};
-use super::views::EventView;
 use super::exercise_watch::ExerciseWatch;
 use super::input::Input;
 use super::record::Record;
@@ -28,6 +27,7 @@ use super::replay::{Replay, TimedInput};
 use super::robot::System;
 use super::setup::Setup;
 use super::timeline::Timeline;
+use super::views::EventView;
 
 /// The first spacing of checkpoints \[ns\] of simulated time.
 pub const CHECKPOINT_NS: u64 = 2_000_000_000;
