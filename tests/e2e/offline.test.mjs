@@ -182,8 +182,8 @@ test('a new build replaces the kept one whole: the old page until it is ready, t
     await page.reload({ waitUntil: 'domcontentloaded' });
     await ready(page);
     assert.deepEqual(await changes(page), [null, null, false], 'the first build, none of the second');
-    await page.waitForSelector('#notice:not([hidden])', { timeout: 60_000 });
     await page.waitForFunction(() => document.body.dataset.offlineUpdate === 'ready', null, { timeout: 60_000 });
+    await page.waitForSelector('#notice:not([hidden])', { timeout: 60_000 });
     assert.match(await page.textContent('#notice-text'), /new version/);
     assert.deepEqual(await changes(page), [null, null, false], 'still the first build');
 

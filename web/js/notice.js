@@ -137,14 +137,13 @@ export function createNotice(box, text, close, said) {
   return {
     /**
      * Shows `message`; `level` is `info`, `success`, `warn` or `error`. With `until`, the
-     * notice is about a state and stays until `until()` is true (or the state is ended).
-     */
-    /**
+     * notice is about a state and stays until `until()` is true (or the state is ended);
+     * with `stays`, it stays until its button closes it or another notice takes its place.
      * @param {string} message
      * @param {string} [level]
-     * @param {{ until?: () => boolean }} [options]
+     * @param {{ until?: () => boolean, stays?: boolean }} [options]
      */
-    show(message, level = 'info', { until: ends } = {}) {
+    show(message, level = 'info', { until: ends, stays = false } = {}) {
       text.textContent = message;
       said.textContent = message;
       box.dataset.level = level;
@@ -153,7 +152,7 @@ export function createNotice(box, text, close, said) {
       until = ends ?? null;
       if (until) box.dataset.tied = 'true';
       else delete box.dataset.tied;
-      if (!until) timer = setTimeout(hide, FADE_MS[level] ?? FADE_MS.info);
+      if (!until && !stays) timer = setTimeout(hide, FADE_MS[level] ?? FADE_MS.info);
       place(keepClear());
     },
     hide,

@@ -61,7 +61,8 @@ export function keepOffline(app) {
     if (!container.controller || document.body.dataset.offlineUpdate) return;
     if (!(await versionOf(worker))) return;
     document.body.dataset.offlineUpdate = 'ready';
-    app.notice.show(t('offline.update_ready'), 'info');
+    // It stays until closed: a class may not look up within a fading notice's seconds.
+    app.notice.show(t('offline.update_ready'), 'info', { stays: true });
   };
   container.register(WORKER).then(async (registration) => {
     if (registration.waiting) tell(registration.waiting);

@@ -66,7 +66,7 @@ interface App {
   /** The last frame's read of the session (`Demo.frame`); undefined before the first. */
   frame?: FrameView;
   notice: {
-    show(text: string, level: string, options?: { until?: () => boolean }): void;
+    show(text: string, level: string, options?: { until?: () => boolean, stays?: boolean }): void;
     hide(): void;
     update(keepClear: () => Array<ClientBox | null>): void;
     endState(): void;
