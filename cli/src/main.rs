@@ -535,6 +535,9 @@ fn run(
     let wall = started.elapsed().as_secs_f64();
     let report = run.report();
     println!("{report}");
+    if let Some(why) = &report.outcome.reason {
+        println!("ended           {}", Words::english().end_reason(why));
+    }
     println!(
         "status          {}",
         Words::english().status(&run.system().status())

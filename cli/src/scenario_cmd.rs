@@ -20,6 +20,7 @@ use rtnav::system::{
     BuildOptions, ComponentKind, OutcomeKind, ParameterWarning, Scenario, Setup, setup,
 };
 use rtnav_cli::scenario_file::{self, SCHEMA_PATH};
+use rtnav_cli::words::Words;
 
 use super::{CliResult, find_root};
 
@@ -137,7 +138,10 @@ fn core_check(path: &Path, text: &str, root: Option<PathBuf>) -> Result<Vec<Stri
         }
     }
     let route = system.mission().route().len();
-    let failure = system.mission().failure().map(str::to_owned);
+    let failure = system
+        .mission()
+        .failure()
+        .map(|f| Words::english().event(f));
     match (failure, scenario.expect.outcome) {
         (Some(why), OutcomeKind::PlanningFailed) => {
             lines.push(format!("plan          fails, as expected: {why}"));

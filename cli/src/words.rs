@@ -22,7 +22,7 @@ use std::sync::OnceLock;
 
 use rtnav::Reason;
 use rtnav::system::{
-    ComponentActivity, EventKind, EventView, InputSummary, ParameterWarning, Status,
+    ComponentActivity, EndReason, EventKind, EventView, InputSummary, ParameterWarning, Status,
 };
 use serde::Serialize;
 use serde_json::{Map, Value, json};
@@ -400,6 +400,36 @@ impl Words {
             return self.t("status.paused", &json!({ "status": said }));
         }
         said
+    }
+
+    // ------------------------------------------------------------------- run outcomes
+
+    /// Why a run ended (`EndReason`) in words: the event or status that ended it, else
+    /// `outcome.<kind>`.
+    pub fn end_reason(&self, reason: &EndReason) -> String {
+        match reason {
+            EndReason::Event { event } => self.event(event),
+            EndReason::Status { status } => self.status(status),
+            EndReason::ComponentError {
+                component,
+                reason: Some(r),
+            } => self.t(
+                "outcome.component_error",
+                &json!({ "component": component, "reason": self.reason(r) }),
+            ),
+            EndReason::ComponentError {
+                component,
+                reason: None,
+            } => self.t(
+                "outcome.component_error.no_reason",
+                &json!({ "component": component }),
+            ),
+            EndReason::Halted => self.t("outcome.halted", &Value::Null),
+            EndReason::TimeLimit { seconds } => {
+                self.t("outcome.time_limit", &json!({ "seconds": seconds }))
+            }
+            EndReason::Running => self.t("outcome.running", &Value::Null),
+        }
     }
 
     // -------------------------------------------------------------------- components

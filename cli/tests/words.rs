@@ -299,3 +299,47 @@ fn events_never_say_minus_zero() {
     });
     assert!(!arrived.contains("-0"), "{arrived}");
 }
+
+#[test]
+fn every_way_a_run_ends_is_said_in_words() {
+    use rtnav::system::{DirResolver, EndReason, Scenario, ScenarioRun};
+    let words = Words::english();
+    let scenario = Scenario::from_json(
+        &std::fs::read_to_string(root().join("fixtures/scenarios/unreachable.json")).unwrap(),
+    )
+    .unwrap();
+    let mut run = ScenarioRun::new(&scenario, &DirResolver::new(root())).unwrap();
+    let failed = run
+        .run_to_end()
+        .reason
+        .clone()
+        .expect("a planning failure says why");
+    let ends = [
+        failed,
+        EndReason::Status {
+            status: Status::StoppedOffGoal {
+                distance: 0.31,
+                heading_error: 0.2,
+            },
+        },
+        EndReason::ComponentError {
+            component: "PhysicsSim0",
+            reason: Some(Reason::ObstacleAhead { ahead: 0.42 }),
+        },
+        EndReason::ComponentError {
+            component: "PhysicsSim0",
+            reason: None,
+        },
+        EndReason::Halted,
+        EndReason::TimeLimit { seconds: 120.0 },
+        EndReason::Running,
+    ];
+    let said: Vec<String> = ends.iter().map(|e| words.end_reason(e)).collect();
+    for s in &said {
+        assert!(!s.is_empty() && !words.has(s) && !s.contains('{'), "`{s}`");
+    }
+    assert!(said[0].contains("GlobalPathPlanning"), "{}", said[0]);
+    assert_eq!(said[5], "stopped at the time limit, 120 s");
+    let ahead = words.reason(&Reason::ObstacleAhead { ahead: 0.42 });
+    assert_eq!(said[2], format!("PhysicsSim0 in Error: {ahead}"));
+}

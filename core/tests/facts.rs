@@ -10,9 +10,9 @@ use rtnav::present::place;
 use rtnav::rtc::LifecycleState;
 use rtnav::system::setup::{self, BuildOptions, Setup};
 use rtnav::system::{
-    CheckState, ComponentKind, DirResolver, DriveInput, EventKind, Input, Measured, Motion, Offset,
-    OutcomeKind, REST_SPEED, REST_TURN_RATE, Scenario, ScenarioRun, Status, System, Tolerances,
-    check_exercise,
+    CheckState, ComponentKind, DirResolver, DriveInput, EndReason, EventKind, Input, Measured,
+    Motion, Offset, OutcomeKind, REST_SPEED, REST_TURN_RATE, Scenario, ScenarioRun, Status, System,
+    Tolerances, check_exercise,
 };
 
 fn scenario(name: &str) -> Scenario {
@@ -138,7 +138,12 @@ fn arrival_a_robot_that_overshoots_and_rests_off_the_goal_has_not_arrived() {
     }
     assert!(Measured::of(s.wiring()).at_rest());
     assert!(
-        outcome.reason.starts_with("stopped off the goal"),
+        matches!(
+            outcome.reason,
+            Some(EndReason::Status {
+                status: Status::StoppedOffGoal { .. }
+            })
+        ),
         "{outcome:?}"
     );
 }
@@ -224,11 +229,15 @@ fn positions_in_words_are_in_metres_with_the_cell() {
     let mut run = ScenarioRun::new(&scenario("unreachable"), &DirResolver::new("..")).unwrap();
     let outcome = run.run_to_end().clone();
     assert_eq!(outcome.kind, OutcomeKind::PlanningFailed);
-    assert!(
-        outcome.reason.contains(" m, ") && outcome.reason.contains("(cell "),
-        "{}",
-        outcome.reason
-    );
+    let Some(EndReason::Event {
+        event: EventKind::PlanningFailed { planner, reason },
+    }) = &outcome.reason
+    else {
+        panic!("{outcome:?}");
+    };
+    assert_eq!(planner, "GlobalPathPlanning");
+    let said = reason.to_string();
+    assert!(said.contains(" m, ") && said.contains("(cell "), "{said}");
 }
 
 /// The exercises with what the tests give them: the solution, the wrong answer, nothing.

@@ -163,7 +163,7 @@ fn drive_pairs(yaml: &str, n: usize, seed: u64) {
         }
         if report.bumps > 0 || report.min_clearance < report.body_radius {
             bumps.push(format!(
-                "pair {i} {start:?} → {goal:?}: {}",
+                "pair {i} {start:?} → {goal:?}: {:?}",
                 report.outcome.reason
             ));
         }

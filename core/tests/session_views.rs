@@ -412,8 +412,8 @@ fn the_status_comes_with_its_fields_for_the_page_to_say() {
             // The fault came 0.1 s into the drive: the robot had not moved yet.
             "motion": "stands",
         }),
-        "{}",
-        t.status
+        "{:?}",
+        session.status()
     );
 }
 
@@ -497,7 +497,7 @@ fn a_frozen_robot_shows_no_speed_after_reset_all_mid_drive() {
     // The read-outs say what the robot does now, not the last sample's speeds.
     for t in [session.telemetry(), session.frame().telemetry] {
         assert_eq!((t.v, t.w), (0.0, 0.0), "a frozen robot shows no speed");
-        assert_eq!(t.status_kind, "ready", "{}", t.status);
+        assert_eq!(t.status_kind, "ready", "{:?}", t.status_fields);
     }
 }
 

@@ -1139,10 +1139,6 @@ label: string,
  */
 outcome: OutcomeKind, 
 /**
- * The outcome's reason.
- */
-reason: string, 
-/**
  * From the activation to the arrival \[s\]; `None` if it did not arrive.
  */
 time_to_goal_s: number | null, 
@@ -1252,10 +1248,6 @@ state: SystemState,
  * Whether the robot drives (a plan is being followed).
  */
 driving: boolean, 
-/**
- * What the robot is doing, in the core's words (`rtnav::system::Status`).
- */
-status: string, 
 /**
  * Which [`Status`](super::Status) it is (`driving`, `arrived`, `no_route`, …): what the
  * page ties its notices to.

@@ -133,7 +133,9 @@ pub fn run_all(only: &[String]) -> ExitCode {
 }
 
 fn cargo_test() -> Result<Option<String>> {
-    run(cargo().args(["test", "--workspace"]))?;
+    // With the view types' declarations: `core/tests/typescript.rs` checks that the committed
+    // `web/types/core.d.ts` is what the Rust types give.
+    run(cargo().arg("test").args(tools::WORKSPACE_FEATURES))?;
     Ok(None)
 }
 
@@ -265,11 +267,11 @@ fn e2e_files(only: &[String]) -> Result<Option<String>> {
     let cli = tools::target_dir()
         .join("debug")
         .join(format!("rtnav{}", std::env::consts::EXE_SUFFIX));
-    if !cli.is_file() {
-        // Made by `cargo test --workspace` (the CLI's integration tests need it); built here
-        // only when that stage did not get so far.
-        run(cargo().args(["build", "-q", "-p", "rtnav-cli"]))?;
-    }
+    // Built every time (a no-op when it is current): a binary left from an older build would
+    // judge the page's run by older rules.
+    run(cargo()
+        .args(["build", "-q", "--bin", "rtnav"])
+        .args(tools::WORKSPACE_FEATURES))?;
     let server = Background::start(&site)?;
     let url = format!("{}{E2E_SUB_PATH}/", server.url);
     println!(

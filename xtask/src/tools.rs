@@ -48,6 +48,11 @@ pub fn cmd(program: &str) -> Command {
 }
 
 /// `cargo`: the one running us (from `$CARGO`) if known.
+/// The features every workspace build of the test run uses, so the test stage, the type
+/// check's declarations and the browser tests' `rtnav` share one build of the core (features
+/// unify per build: a build with other features compiles the core again).
+pub const WORKSPACE_FEATURES: [&str; 3] = ["--workspace", "--features", "rtnav/typescript"];
+
 pub fn cargo() -> Command {
     let program = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
     let mut c = cmd(&program);

@@ -110,17 +110,10 @@ fn bindings() -> PathBuf {
 
 /// Writes `web/types/core.d.ts` from the Rust types.
 pub fn write_declarations() -> Result {
+    // The workspace's build of the core (the test stage's), so that after it this only runs.
     run(cargo()
-        .args([
-            "test",
-            "-q",
-            "-p",
-            "rtnav",
-            "--features",
-            "typescript",
-            "--test",
-            "typescript",
-        ])
+        .args(["test", "-q", "--test", "typescript"])
+        .args(tools::WORKSPACE_FEATURES)
         .env("RTNAV_WRITE_TYPES", "1"))
 }
 

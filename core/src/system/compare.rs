@@ -28,8 +28,6 @@ pub struct RunSummary {
     pub label: String,
     /// How the run ended.
     pub outcome: OutcomeKind,
-    /// The outcome's reason.
-    pub reason: String,
     /// From the activation to the arrival \[s\]; `None` if it did not arrive.
     pub time_to_goal_s: Option<f64>,
     /// Distance the robot's centre drove \[m\].
@@ -173,7 +171,6 @@ fn run(
     let summary = RunSummary {
         label: label_of(setup),
         outcome: report.outcome.kind,
-        reason: report.outcome.reason.clone(),
         time_to_goal_s: arrived_ns.map(|t| t.saturating_sub(start_ns) as f64 * 1e-9),
         path_length_m: report.path_length,
         min_clearance_m: report.min_clearance,

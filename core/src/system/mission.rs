@@ -37,7 +37,7 @@ pub struct Mission {
     /// The epoch whose plan was last sent (a non-empty path reached DriveControl).
     sent_epoch: u64,
     /// The newest planning failure not yet followed by a sent plan.
-    failure: Option<String>,
+    failure: Option<EventKind>,
     /// At rest within the tolerances of the goal, after the last tick.
     arrived: bool,
     /// The epoch whose `Arrived` was logged (one per goal).
@@ -96,8 +96,8 @@ impl Mission {
                     self.sent_epoch = self.goal_epoch;
                     self.failure = None;
                 }
-                EventKind::PlanningFailed { planner, reason } => {
-                    self.failure = Some(format!("{planner}: {reason}"));
+                failed @ EventKind::PlanningFailed { .. } => {
+                    self.failure = Some(failed.clone());
                 }
                 EventKind::Cleared => {
                     self.goal = None;
@@ -191,9 +191,10 @@ impl Mission {
         self.goal_epoch > 0 && self.sent_epoch == self.goal_epoch
     }
 
-    /// The newest planning failure not yet followed by a plan (`planner: reason`).
-    pub fn failure(&self) -> Option<&str> {
-        self.failure.as_deref()
+    /// The newest planning failure not yet followed by a plan: its
+    /// [`EventKind::PlanningFailed`].
+    pub fn failure(&self) -> Option<&EventKind> {
+        self.failure.as_ref()
     }
 
     /// The heading error \[rad\] when the robot reached the goal position, before it turned

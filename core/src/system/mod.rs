@@ -137,7 +137,7 @@ pub use rest::{
 };
 pub use robot::System;
 pub use run_limit::MAX_REPLAY_NS;
-pub use runner::{Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario};
+pub use runner::{EndReason, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario};
 #[cfg(not(target_arch = "wasm32"))]
 pub use scenario::DirResolver;
 pub use scenario::{

@@ -18,6 +18,8 @@ use super::timeline::{Timeline, secs_to_ns};
 use crate::errors::{ScenarioError, SystemError};
 use crate::interfaces::Pose;
 use crate::motion::{DrivePhase, angle_diff};
+use crate::reason::Reason;
+use crate::rtc::LifecycleState;
 
 /// How long the robot must stand still, without a path, after a planning failure (or
 /// SafeMode / Clear) for the run to end there \[ns\]: long enough for LocalPathPlanning's
@@ -29,8 +31,48 @@ pub const STILL_NS: u64 = 2_500_000_000;
 pub struct Outcome {
     /// The kind.
     pub kind: OutcomeKind,
-    /// The reason in words (the failure, the bump, …).
-    pub reason: String,
+    /// Why, as data (none for an arrival). The command line says it in the page's English.
+    pub reason: Option<EndReason>,
+}
+
+/// Why a run ended where it did: the fact that ended it, as data.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum EndReason {
+    /// The event that ended it: a bump, a planning failure, a refused request.
+    Event {
+        /// The event.
+        event: EventKind,
+    },
+    /// The status it came to rest in (stopped off the goal).
+    Status {
+        /// The status.
+        status: Status,
+    },
+    /// A component went to Error.
+    ComponentError {
+        /// Its instance name.
+        component: &'static str,
+        /// Why, if known.
+        reason: Option<Reason>,
+    },
+    /// SafeMode or Clear stopped the robot.
+    Halted,
+    /// The time limit was reached.
+    TimeLimit {
+        /// The limit \[s\].
+        seconds: f64,
+    },
+    /// The run has not ended yet.
+    Running,
+}
+
+impl EndReason {
+    /// Whether `planner` (`GlobalPathPlanning`, `LocalPathPlanning`) is the one whose failure
+    /// ended the run.
+    pub fn is_failure_of(&self, planner: &str) -> bool {
+        matches!(self, Self::Event { event: EventKind::PlanningFailed { planner: p, .. } } if p == planner)
+    }
 }
 
 /// What a run measured (the runner's summary, the tests' checks).
@@ -87,7 +129,7 @@ impl ScenarioReport {
         let mut problems = Vec::new();
         if self.outcome.kind != expect.outcome {
             problems.push(format!(
-                "outcome {:?} ({}), expected {:?}",
+                "outcome {:?} ({:?}), expected {:?}",
                 self.outcome.kind, self.outcome.reason, expect.outcome
             ));
         }
@@ -124,10 +166,14 @@ impl ScenarioReport {
         }
         if expect.outcome == OutcomeKind::PlanningFailed
             && let Some(p) = &expect.planner
-            && !self.outcome.reason.starts_with(p.as_str())
+            && !self
+                .outcome
+                .reason
+                .as_ref()
+                .is_some_and(|r| r.is_failure_of(p))
         {
             problems.push(format!(
-                "the failure came from `{}`, expected {p}",
+                "the failure came from {:?}, expected {p}",
                 self.outcome.reason
             ));
         }
@@ -142,16 +188,7 @@ impl ScenarioReport {
 impl fmt::Display for ScenarioReport {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "scenario        {}", self.name)?;
-        writeln!(
-            f,
-            "outcome         {:?}{}",
-            self.outcome.kind,
-            if self.outcome.reason.is_empty() {
-                String::new()
-            } else {
-                format!(": {}", self.outcome.reason)
-            }
-        )?;
+        writeln!(f, "outcome         {:?}", self.outcome.kind)?;
         writeln!(f, "simulated time  {:.3} s", self.sim_time)?;
         writeln!(f, "path length     {:.3} m", self.path_length)?;
         writeln!(
@@ -197,7 +234,7 @@ pub struct ScenarioRun {
     limit_ns: u64,
     outcome: Option<Outcome>,
     event_cursor: u64,
-    refused: Option<String>,
+    refused: Option<EventKind>,
     still_since: Option<u64>,
 }
 
@@ -324,7 +361,7 @@ impl ScenarioRun {
             name: self.scenario.name.clone(),
             outcome: self.outcome.clone().unwrap_or(Outcome {
                 kind: OutcomeKind::TimeLimit,
-                reason: "still running".to_owned(),
+                reason: Some(EndReason::Running),
             }),
             sim_time: s.time(),
             path_length: stats.path_length,
@@ -360,7 +397,7 @@ impl ScenarioRun {
 pub fn judge(
     system: &System,
     cursor: &mut u64,
-    refused: &mut Option<String>,
+    refused: &mut Option<EventKind>,
     still_since: &mut Option<u64>,
     limit_ns: u64,
 ) -> Option<Outcome> {
@@ -370,22 +407,18 @@ pub fn judge(
             EventKind::Arrived { .. } => {
                 end.get_or_insert(Outcome {
                     kind: OutcomeKind::Arrived,
-                    reason: String::new(),
+                    reason: None,
                 });
             }
-            EventKind::Bump { report } => {
+            EventKind::Bump { .. } => {
                 end = Some(Outcome {
                     kind: OutcomeKind::Bumped,
-                    reason: report.to_string(),
+                    reason: Some(EndReason::Event {
+                        event: e.kind.clone(),
+                    }),
                 });
             }
-            EventKind::RequestRefused {
-                source,
-                request,
-                reason,
-            } => {
-                *refused = Some(format!("{source}: {request}: {reason}"));
-            }
+            EventKind::RequestRefused { .. } => *refused = Some(e.kind.clone()),
             EventKind::GoalSet { .. } => *refused = None,
             _ => {}
         }
@@ -395,17 +428,14 @@ pub fn judge(
         return end;
     }
     if system.state() == SystemState::Error {
+        let ec = system.wiring().execution_context();
         let reason = ComponentKind::ALL
             .into_iter()
-            .find_map(|k| {
-                let id = k.index();
-                let ec = system.wiring().execution_context();
-                ec.last_error(id)
-                    .ok()
-                    .flatten()
-                    .map(|e| format!("{k}: {e}"))
-            })
-            .unwrap_or_default();
+            .find(|k| ec.state(k.index()).ok() == Some(LifecycleState::Error))
+            .map(|k| EndReason::ComponentError {
+                component: k.instance_name(),
+                reason: ec.last_error(k.index()).ok().flatten().cloned(),
+            });
         return Some(Outcome {
             kind: OutcomeKind::ComponentError,
             reason,
@@ -415,13 +445,9 @@ pub fn judge(
     let wiring = system.wiring();
     let resting = Measured::of(wiring).at_rest();
     let idle = matches!(wiring.drive_control().pursuit().phase(), DrivePhase::Idle);
-    let failure = system
-        .mission()
-        .failure()
-        .map(str::to_owned)
-        .or_else(|| refused.clone());
+    let failure = system.mission().failure().or(refused.as_ref()).cloned();
     let off_goal = match system.status() {
-        s @ Status::StoppedOffGoal { .. } => Some(s.to_string()),
+        s @ Status::StoppedOffGoal { .. } => Some(s),
         _ => None,
     };
     let stopped = idle && (failure.is_some() || system.mission().is_halted());
@@ -429,17 +455,17 @@ pub fn judge(
         let since = *still_since.get_or_insert(now);
         if now - since >= STILL_NS {
             return Some(match (off_goal, failure) {
-                (Some(reason), _) => Outcome {
+                (Some(status), _) => Outcome {
                     kind: OutcomeKind::StoppedOffGoal,
-                    reason,
+                    reason: Some(EndReason::Status { status }),
                 },
-                (None, Some(reason)) => Outcome {
+                (None, Some(event)) => Outcome {
                     kind: OutcomeKind::PlanningFailed,
-                    reason,
+                    reason: Some(EndReason::Event { event }),
                 },
                 (None, None) => Outcome {
                     kind: OutcomeKind::Halted,
-                    reason: "SafeMode or Clear".to_owned(),
+                    reason: Some(EndReason::Halted),
                 },
             });
         }
@@ -448,7 +474,9 @@ pub fn judge(
     }
     (now >= limit_ns).then(|| Outcome {
         kind: OutcomeKind::TimeLimit,
-        reason: format!("stopped at {} s", limit_ns as f64 * 1e-9),
+        reason: Some(EndReason::TimeLimit {
+            seconds: limit_ns as f64 * 1e-9,
+        }),
     })
 }
 

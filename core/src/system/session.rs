@@ -285,7 +285,7 @@ impl Session {
         &self.system
     }
 
-    /// What the robot is doing, in words.
+    /// What the robot is doing, and why, as data (`Status`).
     pub fn status(&self) -> Status {
         self.system.status()
     }

@@ -128,7 +128,6 @@ impl Session {
             time_s: s.time(),
             state: s.state(),
             driving: s.is_driving(),
-            status: status.to_string(),
             status_kind,
             status_fields,
             arrived: m.is_arrived(),

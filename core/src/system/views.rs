@@ -167,8 +167,6 @@ pub struct TelemetryView {
     pub state: SystemState,
     /// Whether the robot drives (a plan is being followed).
     pub driving: bool,
-    /// What the robot is doing, in the core's words (`rtnav::system::Status`).
-    pub status: String,
     /// Which [`Status`](super::Status) it is (`driving`, `arrived`, `no_route`, …): what the
     /// page ties its notices to.
     pub status_kind: String,
