@@ -3,7 +3,6 @@
 //! version or a malformed one is refused; seeking back and forth reaches the state a straight
 //! run had at that time, trace hash and all.
 
-use std::path::Path;
 use std::time::Instant;
 
 use rtnav::system::{
@@ -11,22 +10,8 @@ use rtnav::system::{
     Session, Verdict, compare, setup_with,
 };
 
-fn root() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-}
-
-fn loaded(name: &str) -> Session {
-    let json =
-        std::fs::read_to_string(root().join(format!("fixtures/scenarios/{name}.json"))).unwrap();
-    let s = Scenario::from_json(&json).unwrap();
-    let MapSource::Json { path } = &s.map else {
-        panic!("test scenarios use JSON maps");
-    };
-    let files = MemoryResolver::new().with(path, std::fs::read(root().join(path)).unwrap());
-    let mut session = Session::new().unwrap();
-    session.load_scenario(s, &files).unwrap();
-    session
-}
+mod common;
+use common::{loaded, root};
 
 fn hash(s: &Session) -> String {
     s.system().record().telemetry().trace_hash()

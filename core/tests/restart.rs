@@ -5,31 +5,13 @@
 //! refused by name and changes nothing; and the exercise's read-out says when the clock is
 //! paused, so it never says the drive runs while the robot stands paused.
 
-use std::path::Path;
-
 use rtnav::Error;
 use rtnav::errors::SessionError;
 use rtnav::interfaces::{Direction, Pose};
-use rtnav::system::{
-    CheckState, ComponentKind, Input, MapSource, MemoryResolver, Scenario, Session, Verdict,
-};
+use rtnav::system::{CheckState, ComponentKind, Input, Session, Verdict};
 
-fn root() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-}
-
-fn loaded(name: &str) -> Session {
-    let json =
-        std::fs::read_to_string(root().join(format!("fixtures/scenarios/{name}.json"))).unwrap();
-    let s = Scenario::from_json(&json).unwrap();
-    let MapSource::Json { path } = &s.map else {
-        panic!("test scenarios use JSON maps");
-    };
-    let files = MemoryResolver::new().with(path, std::fs::read(root().join(path)).unwrap());
-    let mut session = Session::new().unwrap();
-    session.load_scenario(s, &files).unwrap();
-    session
-}
+mod common;
+use common::loaded;
 
 fn verdict(s: &Session) -> Verdict {
     s.exercise().unwrap().verdict

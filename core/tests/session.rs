@@ -2,36 +2,13 @@
 //! first frame, a changed planning parameter is planned at once, a NaN pose puts
 //! Localization in Error and Reset recovers, the plot window.
 
-use std::path::Path;
-
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::render::{Layers, Renderer, caption};
 use rtnav::rtc::LifecycleState;
-use rtnav::system::{
-    ComponentKind, EventKind, Input, MapSource, MemoryResolver, Scenario, Session, Telemetry,
-};
+use rtnav::system::{ComponentKind, EventKind, Input, Session, Telemetry};
 
-fn root() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-}
-
-fn scenario(name: &str) -> (Scenario, MemoryResolver) {
-    let json =
-        std::fs::read_to_string(root().join(format!("fixtures/scenarios/{name}.json"))).unwrap();
-    let s = Scenario::from_json(&json).unwrap();
-    let MapSource::Json { path } = &s.map else {
-        panic!("test scenarios use JSON maps");
-    };
-    let files = MemoryResolver::new().with(path, std::fs::read(root().join(path)).unwrap());
-    (s, files)
-}
-
-fn loaded(name: &str) -> Session {
-    let (s, files) = scenario(name);
-    let mut session = Session::new().unwrap();
-    session.load_scenario(s, &files).unwrap();
-    session
-}
+mod common;
+use common::loaded;
 
 /// What the page draws: every layer, the page's caption.
 fn frame(session: &Session) -> Vec<u8> {

@@ -8,7 +8,7 @@ import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
 import { promisify } from 'node:util';
-import { WAIT, DRIVE, REPO, launch, openPage, screenshot, showTab, frames, layoutProblems } from './helpers.mjs';
+import { WAIT, DRIVE, REPO, launch, openPage, screenshot, showTab, frames, layoutProblems, setParam } from './helpers.mjs';
 
 const run = promisify(execFile);
 const browsers = [];
@@ -21,14 +21,9 @@ async function browser(options = {}) {
   return b;
 }
 
-const row = (component, name) => `#params-panel .param[data-component="${component}"][data-name="${name}"]`;
-async function setParam(page, component, name, value) {
-  await showTab(page, 'params');
-  const input = `${row(component, name)} input`;
-  await page.waitForSelector(input, WAIT);
-  await page.fill(input, String(value));
-  await page.press(input, 'Enter');
-  await page.waitForSelector(`${row(component, name)}[data-value="${value}"]`, { state: 'attached', ...WAIT });
+/** Sets the parameter in the Parameters tab, then goes back to the RT-components tab. */
+async function setParamThenBack(page, component, name, value) {
+  await setParamThenBack(page, component, name, value);
   await showTab(page, 'rtc');
 }
 async function pick(page, name) {
@@ -65,12 +60,12 @@ test('an exercise done in the page: the live checklist, then the verdict; the sa
 
   // Then right: TargetArea 2 m, the dock within it.
   await pick(page, 'ex_backward_dock');
-  await setParam(page, 'LocalPathPlanning', 'TargetArea', 2);
+  await setParamThenBack(page, 'LocalPathPlanning', 'TargetArea', 2);
   // A parameter the exercise does not name shows at once, and can be put back.
-  await setParam(page, 'DriveControl', 'MaxVelocity', 0.4);
+  await setParamThenBack(page, 'DriveControl', 'MaxVelocity', 0.4);
   await page.waitForSelector('#exercise .exercise-check[data-check="only_allowed"][data-state="failed"]', WAIT);
   assert.match(await page.textContent('#exercise .exercise-check[data-check="only_allowed"]'), /DriveControl\.MaxVelocity/);
-  await setParam(page, 'DriveControl', 'MaxVelocity', 0.5);
+  await setParamThenBack(page, 'DriveControl', 'MaxVelocity', 0.5);
   await page.waitForSelector('#exercise .exercise-check[data-check="only_allowed"][data-state="passed"]', WAIT);
   assert.equal(await drive(page), 'passed');
   const right = await checklist(page);

@@ -256,6 +256,28 @@ export async function showTab(page, name) {
   if (name === 'params') await shownParams(page);
 }
 
+/** The Parameters tab's row of `component`'s parameter `name`. */
+export const paramRow = (component, name) => `#params-panel .param[data-component="${component}"][data-name="${name}"]`;
+
+/** Types `value` into the parameter's field in the Parameters tab and presses Enter, as a person does. */
+export async function typeParam(page, component, name, value) {
+  await showTab(page, 'params');
+  const input = `${paramRow(component, name)} input`;
+  await page.waitForSelector(input, WAIT);
+  await page.fill(input, String(value));
+  await page.press(input, 'Enter');
+}
+
+/** Waits until the Parameters tab shows `value` as the parameter's requested value. */
+export const shownParam = (page, component, name, value) =>
+  page.waitForSelector(`${paramRow(component, name)}[data-value="${value}"]`, { state: 'attached', ...WAIT });
+
+/** Types `value` as {@link typeParam} does and waits until the tab shows it. */
+export async function setParam(page, component, name, value) {
+  await typeParam(page, component, name, value);
+  await shownParam(page, component, name, value);
+}
+
 /** Waits until component `name`'s row shows `state`, in the RT System Editor's colour. */
 export async function expectState(page, name, state, options = {}) {
   const badge = await until(page, `${name}'s row to show ${state}`, (a) => {

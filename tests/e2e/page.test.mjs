@@ -20,7 +20,7 @@ import assert from 'node:assert/strict';
 import {
   WAIT, DRIVE, launch, openPage, screenshot, plan, telemetry, mapInfo, cellToPage, showTab,
   expectState, activateAll, logged, frames, layoutProblems, until, shownText, shownStatus,
-  shownDriven, shownLogged, clockRuns, systemShows,
+  shownDriven, shownLogged, clockRuns, systemShows, paramRow, setParam,
 } from './helpers.mjs';
 
 const SIZES = [[1280, 800], [768, 1024], [390, 844]];
@@ -35,16 +35,8 @@ after(async () => {
 });
 
 const open = (query = '') => openPage(browser.context, query);
-const row = (component, name) => `#params-panel .param[data-component="${component}"][data-name="${name}"]`;
+const row = paramRow;
 
-async function setParam(page, component, name, value) {
-  await showTab(page, 'params');
-  const input = `${row(component, name)} input`;
-  await page.waitForSelector(input, WAIT);
-  await page.fill(input, String(value));
-  await page.press(input, 'Enter');
-  await page.waitForSelector(`${row(component, name)}[data-value="${value}"]`, { state: 'attached', ...WAIT });
-}
 
 /** Waits until the log shows the line `text` (of any kind); returns every line, newest first. */
 const shownLine = (page, text) => until(page, `the log line "${text}"`, (t) => {

@@ -6,24 +6,14 @@
 // panel says the clock is paused, as the status does, until Run.
 import { test, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { WAIT, DRIVE, launch, openPage, showTab, until, frames } from './helpers.mjs';
+import { WAIT, DRIVE, launch, openPage, showTab, until, frames, setParam } from './helpers.mjs';
 
 const browsers = [];
 after(async () => {
   for (const b of browsers) await b.close();
 });
 
-const row = (component, name) => `#params-panel .param[data-component="${component}"][data-name="${name}"]`;
 
-/** Types `value` into the parameter's field and presses Enter, as a person does. */
-async function typeParam(page, component, name, value) {
-  await showTab(page, 'params');
-  const input = `${row(component, name)} input`;
-  await page.waitForSelector(input, WAIT);
-  await page.fill(input, String(value));
-  await page.press(input, 'Enter');
-  await page.waitForSelector(`${row(component, name)}[data-value="${value}"]`, { state: 'attached', ...WAIT });
-}
 
 /** Waits until the exercise's verdict reads `verdict` (`data-verdict`); returns its text. */
 function verdictShown(page, verdict, options = WAIT) {
@@ -74,7 +64,7 @@ test('an exercise failed, restarted by the button and by Shift+R, then passed wi
   await page.selectOption('#speed', '16');
 
   // Wrong: dmin 0.7 m, more than half the 1.2 m door.
-  await typeParam(page, 'LocalPathPlanning', 'dmin', 0.7);
+  await setParam(page, 'LocalPathPlanning', 'dmin', 0.7);
   await page.click('#activate-all');
   await verdictShown(page, 'failed', DRIVE);
   await page.waitForSelector('#exercise .exercise-check[data-check="arrived"][data-state="failed"]', WAIT);
@@ -93,7 +83,7 @@ test('an exercise failed, restarted by the button and by Shift+R, then passed wi
   await restartedShown(page, '0.7');
 
   // Right: 0.55 m, below half the door, above the body's reach.
-  await typeParam(page, 'LocalPathPlanning', 'dmin', 0.55);
+  await setParam(page, 'LocalPathPlanning', 'dmin', 0.55);
   await page.click('#activate-all');
   const text = await verdictShown(page, 'passed', DRIVE);
   assert.match(text, /^Passed: every check met/);
@@ -109,7 +99,7 @@ test('back at 0 on the timeline, Activate all: the exercise panel says the clock
   const { page, problems } = await openPage(b.context, '?lang=en');
   await page.selectOption('#scenario', 'ex_door_dmin');
   await verdictShown(page, 'waiting');
-  await typeParam(page, 'LocalPathPlanning', 'dmin', 0.55);
+  await setParam(page, 'LocalPathPlanning', 'dmin', 0.55);
   await page.click('#activate-all');
   await until(page, 'the drive a second on', () => {
     const t = parseFloat(document.getElementById('sim-time').textContent);

@@ -21,7 +21,7 @@ import { promisify } from 'node:util';
 import {
   REPO, WAIT, launch, openPage, screenshot, json, plan, cellToPage, showTab, expectState,
   activateAll, frames, canvasHash, keepCanvas, canvasDiff, logged, shownLogged, shownDriven,
-  shownText, clockRuns,
+  shownText, clockRuns, paramRow, typeParam, shownParam,
 } from './helpers.mjs';
 
 const run = promisify(execFile);
@@ -38,20 +38,8 @@ const open = (query = '') => openPage(browser.context, query);
 const params = (page) => json(page, 'params_json');
 const param = (list, component, name) =>
   list.find((c) => c.component === component).params.find((p) => p.name === name);
-const row = (component, name) => `#params-panel .param[data-component="${component}"][data-name="${name}"]`;
+const row = paramRow;
 
-/** Types `value` into the parameter's field in the panel and presses Enter. */
-async function setParam(page, component, name, value) {
-  await showTab(page, 'params');
-  const input = `${row(component, name)} input`;
-  await page.waitForSelector(input, WAIT);
-  await page.fill(input, String(value));
-  await page.press(input, 'Enter');
-}
-
-/** Waits until the panel shows `value` as the parameter's requested value. */
-const shown = (page, component, name, value) =>
-  page.waitForSelector(`${row(component, name)}[data-value="${value}"]`, { state: 'attached', ...WAIT });
 
 /** The `[x0, y0, x1, y1]` canvas-pixel box around the cells of `paths`, padded. */
 const pathBox = (page, paths, pad = 12) =>
@@ -80,8 +68,8 @@ test('PostureConsiderationLevel 0 → 100 while the robot stands: re-planned, th
    */
   const level = async (value) => {
     const plans = (await logged(page, 'LocalPlanSent')).length;
-    await setParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', value);
-    await shown(page, 'LocalPathPlanning', 'PostureConsiderationLevel', value);
+    await typeParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', value);
+    await shownParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', value);
     await shownLogged(page, 'LocalPlanSent', plans + 1);
     await clockRuns(page, 1);
     await frames(page, 3);
@@ -124,8 +112,8 @@ test('PGainL while driving changes the torques and their plot; lengthOfAxle wait
     await page.evaluate(() => window.rtnav.demo.step_ticks(1500));
     const tc = await page.evaluate(() => window.rtnav.demo.time_s());
     if (change) {
-      await setParam(page, 'MotorControl', 'PGainL', 40);
-      await shown(page, 'MotorControl', 'PGainL', 40);
+      await typeParam(page, 'MotorControl', 'PGainL', 40);
+      await shownParam(page, 'MotorControl', 'PGainL', 40);
     }
     await page.evaluate(() => window.rtnav.demo.step_ticks(1000));
     await showTab(page, 'plots');
@@ -162,7 +150,7 @@ test('PGainL while driving changes the torques and their plot; lengthOfAxle wait
 
   // lengthOfAxle (on activation): pending while MotorControl stays Active.
   await page.click('#pause');
-  await setParam(page, 'MotorControl', 'lengthOfAxle', 0.5);
+  await typeParam(page, 'MotorControl', 'lengthOfAxle', 0.5);
   await page.waitForSelector(`${row('MotorControl', 'lengthOfAxle')}.pending`, WAIT);
   assert.match(await page.textContent(`${row('MotorControl', 'lengthOfAxle')} .pending-tag`), /^pending \(next activation\)/);
   let axle = param(await params(page), 'MotorControl', 'lengthOfAxle');
@@ -271,10 +259,10 @@ test('a share link reproduces the scenario, its edits and parameters; a bad link
   const [px, py] = await cellToPage(page, at);
   await page.mouse.click(px, py);
   await page.waitForFunction(([x, y]) => window.rtnav.demo.cell(x, y) === 1, at, WAIT);
-  await setParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 40);
-  await shown(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 40);
-  await setParam(page, 'DriveControl', 'MaxVelocity', 0.3);
-  await shown(page, 'DriveControl', 'MaxVelocity', 0.3);
+  await typeParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 40);
+  await shownParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 40);
+  await typeParam(page, 'DriveControl', 'MaxVelocity', 0.3);
+  await shownParam(page, 'DriveControl', 'MaxVelocity', 0.3);
   // The clock is paused, so the frame stays the set-up's first one (its caption carries the
   // simulated time); making the link restarts the set-up from it while the robot stands.
   await page.click('#pause');
@@ -341,7 +329,7 @@ test('an exported .conf imported again restores the configuration; refused value
   assert.match(text, /PostureConsiderationLevel/);
 
   // A refused value: explained beside the field, the field back to the value held.
-  await setParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 250);
+  await typeParam(page, 'LocalPathPlanning', 'PostureConsiderationLevel', 250);
   const error = `${row('LocalPathPlanning', 'PostureConsiderationLevel')} .param-error`;
   await page.waitForSelector(error, WAIT);
   const why = await page.textContent(error);
@@ -349,16 +337,16 @@ test('an exported .conf imported again restores the configuration; refused value
   assert.match(why, /250/);
   assert.match(why, /\[0, 100\]/);
   assert.equal(await page.inputValue(`${row('LocalPathPlanning', 'PostureConsiderationLevel')} input`), '85');
-  await setParam(page, 'DriveControl', 'MaxVelocity', 'fast');
+  await typeParam(page, 'DriveControl', 'MaxVelocity', 'fast');
   await page.waitForSelector(`${row('DriveControl', 'MaxVelocity')} .param-error`, WAIT);
   assert.deepEqual(await params(page), original, 'nothing changed');
 
   // Changes: one parameter, and the four gains through SetPDGain.
-  await setParam(page, 'DriveControl', 'MaxVelocity', 0.25);
-  await shown(page, 'DriveControl', 'MaxVelocity', 0.25);
+  await typeParam(page, 'DriveControl', 'MaxVelocity', 0.25);
+  await shownParam(page, 'DriveControl', 'MaxVelocity', 0.25);
   for (const [name, v] of [['PGainL', 7], ['PGainR', 8], ['DGainL', 1.5], ['DGainR', 2.5]]) await page.fill(`#pd-${name}`, String(v));
   await page.click('#pd-send');
-  await shown(page, 'MotorControl', 'DGainR', 2.5);
+  await shownParam(page, 'MotorControl', 'DGainR', 2.5);
   let list = await params(page);
   assert.deepEqual(['PGainL', 'PGainR', 'DGainL', 'DGainR'].map((n) => param(list, 'MotorControl', n).effective), [7, 8, 1.5, 2.5]);
   assert.equal(param(list, 'DriveControl', 'MaxVelocity').effective, 0.25);
