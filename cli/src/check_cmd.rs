@@ -34,11 +34,15 @@ use rtnav::system::{
     Check, CheckState, ExerciseStatus, Replay, Scenario, Session, Unit, Verdict, check_exercise,
 };
 
-use super::{CliResult, load};
+use clap::Args;
+use rtnav_cli::error::{CliError, CliResult};
+use rtnav_cli::scenario_load::load;
+
+use crate::options::RootOption;
 
 /// What is handed in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum HandIn {
+enum HandIn {
     /// OpenRTM `.conf` bundles, as the page saves them.
     Conf,
     /// Replays (`*.rtnav.json`), as the page downloads them.
@@ -56,22 +60,50 @@ impl HandIn {
 }
 
 /// The options of `rtnav check`.
-#[derive(Debug)]
-pub(super) struct CheckArgs {
-    /// The scenario file.
-    pub scenario: PathBuf,
-    /// What the files are.
-    pub kind: HandIn,
-    /// Files and folders named.
-    pub paths: Vec<PathBuf>,
-    /// `--root`.
-    pub root: Option<PathBuf>,
-    /// `--json` (one hand-in).
-    pub json: bool,
-    /// `--csv PATH`.
-    pub csv: Option<PathBuf>,
-    /// `--jobs N` (default: every core).
-    pub jobs: Option<usize>,
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// The scenario file (JSON) with an exercise.
+    scenario: PathBuf,
+    /// Configurations handed in, files or folders: OpenRTM `.conf` bundles as the page
+    /// saves them (components or parameters left out keep the scenario's values).
+    /// Without --conf and --replay: the exercise as the scenario stands.
+    #[arg(long, num_args = 1.., value_name = "FILE_OR_DIR")]
+    conf: Vec<PathBuf>,
+    /// Runs handed in as replays (`*.rtnav.json`, downloaded from the page), files or
+    /// folders: each checked as it was recorded, after its run reproduced its recorded
+    /// trace.
+    #[arg(long, num_args = 1.., value_name = "FILE_OR_DIR", conflicts_with = "conf")]
+    replay: Vec<PathBuf>,
+    #[command(flatten)]
+    root: RootOption,
+    /// Print the result of one hand-in as one line of JSON instead.
+    #[arg(long)]
+    json: bool,
+    /// Write the table (one row per hand-in) here as CSV.
+    #[arg(long, value_name = "PATH")]
+    csv: Option<PathBuf>,
+    /// Hand-ins checked at once (default: one per core).
+    #[arg(long, value_name = "N")]
+    jobs: Option<usize>,
+}
+
+impl CheckArgs {
+    /// What the files handed in are.
+    fn kind(&self) -> HandIn {
+        if self.replay.is_empty() {
+            HandIn::Conf
+        } else {
+            HandIn::Replay
+        }
+    }
+
+    /// The files and folders handed in.
+    fn paths(&self) -> &[PathBuf] {
+        match self.kind() {
+            HandIn::Conf => &self.conf,
+            HandIn::Replay => &self.replay,
+        }
+    }
 }
 
 /// A hand-in's verdict in the table.
@@ -111,11 +143,15 @@ fn hand_ins(paths: &[PathBuf], kind: HandIn) -> CliResult<Vec<PathBuf>> {
     let mut files = Vec::new();
     for path in paths {
         if path.is_dir() {
-            let entries = std::fs::read_dir(path)
-                .map_err(|e| format!("cannot read folder `{}`: {e}", path.display()))?;
+            let entries = std::fs::read_dir(path).map_err(|source| CliError::ReadFolder {
+                path: path.clone(),
+                source,
+            })?;
             for entry in entries {
-                let entry =
-                    entry.map_err(|e| format!("cannot read folder `{}`: {e}", path.display()))?;
+                let entry = entry.map_err(|source| CliError::ReadFolder {
+                    path: path.clone(),
+                    source,
+                })?;
                 let file = entry.path();
                 let wanted = file.is_file()
                     && file
@@ -128,7 +164,7 @@ fn hand_ins(paths: &[PathBuf], kind: HandIn) -> CliResult<Vec<PathBuf>> {
         } else if path.exists() {
             files.push(path.clone());
         } else {
-            return Err(format!("`{}`: no such file or folder", path.display()));
+            return Err(CliError::NoSuchPath { path: path.clone() });
         }
     }
     files.sort();
@@ -190,7 +226,7 @@ fn judge_replay(
     text: &str,
     scenario: &Scenario,
     resolver: &RepoResolver,
-) -> Result<Row, String> {
+) -> CliResult<Row> {
     let run = match Replay::from_json(text) {
         Ok(run) => run,
         Err(e) => return Ok(refused(file, e.to_string())),
@@ -205,10 +241,10 @@ fn judge_replay(
             ),
         ));
     }
-    let mut session = Session::new().map_err(|e| e.to_string())?;
+    let mut session = Session::new().map_err(CliError::core)?;
     session
         .load_scenario(scenario.clone(), resolver)
-        .map_err(|e| e.to_string())?;
+        .map_err(CliError::core)?;
     let check = match session.load_replay(&run) {
         Ok(check) => check,
         Err(e) => return Ok(refused(file, e.to_string())),
@@ -231,7 +267,7 @@ fn judge_replay(
     }
     let status = session
         .exercise()
-        .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?;
+        .ok_or_else(|| CliError::NoExercise(scenario.name.clone()))?;
     Ok(judged(file, status))
 }
 
@@ -241,7 +277,7 @@ fn judge(
     kind: HandIn,
     scenario: &Scenario,
     resolver: &RepoResolver,
-) -> Result<Row, String> {
+) -> CliResult<Row> {
     let bytes = match std::fs::read(file) {
         Ok(b) => b,
         Err(e) => return Ok(refused(file, format!("cannot read: {e}"))),
@@ -264,7 +300,7 @@ fn judge_guarded(
     kind: HandIn,
     scenario: &Scenario,
     resolver: &RepoResolver,
-) -> Result<Row, String> {
+) -> CliResult<Row> {
     catch_unwind(AssertUnwindSafe(|| judge(file, kind, scenario, resolver))).unwrap_or_else(
         |panic| {
             let what = panic
@@ -287,45 +323,46 @@ fn judge_all(
     scenario: &Scenario,
     resolver: &RepoResolver,
 ) -> CliResult<(Vec<Row>, bool)> {
-    let files = hand_ins(&args.paths, args.kind)?;
+    let files = hand_ins(args.paths(), args.kind())?;
     if files.is_empty() {
-        return Err(format!(
-            "no hand-ins: no *.{} file in {}",
-            args.kind.extension(),
-            args.paths
+        return Err(CliError::NoHandIns {
+            extension: args.kind().extension(),
+            places: args
+                .paths()
                 .iter()
                 .map(|p| format!("`{}`", p.display()))
                 .collect::<Vec<_>>()
-                .join(", ")
-        ));
+                .join(", "),
+        });
     }
-    let class = files.len() > 1 || args.paths.iter().any(|p| p.is_dir());
+    let class = files.len() > 1 || args.paths().iter().any(|p| p.is_dir());
     if class && args.json {
-        return Err("--json prints one hand-in; for a class use the table or --csv".to_owned());
+        return Err(CliError::Usage(
+            "--json prints one hand-in; for a class use the table or --csv",
+        ));
     }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.jobs.unwrap_or(0))
-        .build()
-        .map_err(|e| e.to_string())?;
+        .build()?;
     let rows = pool.install(|| {
         files
             .par_iter()
-            .map(|f| judge_guarded(f, args.kind, scenario, resolver))
+            .map(|f| judge_guarded(f, args.kind(), scenario, resolver))
             .collect::<Result<Vec<_>, _>>()
     })?;
     Ok((rows, class))
 }
 
 /// `rtnav check` (module documentation).
-pub(super) fn check(args: CheckArgs) -> CliResult<ExitCode> {
-    let (scenario, resolver) = load(&args.scenario, args.root.clone())?;
+pub fn check(args: CheckArgs) -> CliResult<ExitCode> {
+    let (scenario, resolver) = load(&args.scenario, args.root.root.clone())?;
     let exercise = scenario
         .exercise
         .clone()
-        .ok_or_else(|| format!("scenario `{}` has no exercise", scenario.name))?;
-    let (rows, class) = if args.paths.is_empty() {
+        .ok_or_else(|| CliError::NoExercise(scenario.name.clone()))?;
+    let (rows, class) = if args.paths().is_empty() {
         // No hand-in: the exercise as the scenario stands (nothing changed).
-        let status = check_exercise(&scenario, &resolver, None, &[]).map_err(|e| e.to_string())?;
+        let status = check_exercise(&scenario, &resolver, None, &[]).map_err(CliError::core)?;
         (
             vec![judged(Path::new("(the scenario as it stands)"), status)],
             false,
@@ -335,11 +372,18 @@ pub(super) fn check(args: CheckArgs) -> CliResult<ExitCode> {
     };
     let columns = columns(&exercise.checks);
     if let Some(csv) = &args.csv {
-        std::fs::write(csv, csv_text(&columns, &rows))
-            .map_err(|e| format!("cannot write `{}`: {e}", csv.display()))?;
+        std::fs::write(csv, csv_text(&columns, &rows)).map_err(|source| CliError::Write {
+            path: csv.clone(),
+            source,
+        })?;
     }
     if !class {
-        let row = rows.into_iter().next().ok_or("no hand-in")?;
+        let Some(row) = rows.into_iter().next() else {
+            return Err(CliError::NoHandIns {
+                extension: args.kind().extension(),
+                places: String::new(),
+            });
+        };
         return one(&args, &scenario, row);
     }
     println!("scenario {}", scenario.name);
@@ -364,10 +408,7 @@ fn exit(all_passed: bool) -> ExitCode {
 fn one(args: &CheckArgs, scenario: &Scenario, row: Row) -> CliResult<ExitCode> {
     let passed = row.verdict == RowVerdict::Passed;
     match (&row.status, args.json) {
-        (Some(status), true) => println!(
-            "{}",
-            serde_json::to_string(status).map_err(|e| e.to_string())?
-        ),
+        (Some(status), true) => println!("{}", serde_json::to_string(status)?),
         (None, true) => println!(
             "{}",
             serde_json::json!({

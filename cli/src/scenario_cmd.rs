@@ -16,24 +16,57 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use rtnav::system::{
-    BuildOptions, ComponentKind, OutcomeKind, ParameterWarning, Scenario, Setup, setup,
-};
+use clap::{Args, Subcommand};
+use rtnav::data::RepoResolver;
+use rtnav::scenario_check::{Finding, ScenarioProblem, check_scenario};
+use rtnav::system::Scenario;
+use rtnav_cli::error::{CliError, CliResult};
 use rtnav_cli::scenario_file::{self, SCHEMA_PATH};
-use rtnav_cli::words::Words;
+use rtnav_cli::scenario_load::find_root;
 
-use super::{CliResult, find_root};
+use crate::options::RootOption;
+
+/// The actions of `rtnav scenario`.
+#[derive(Debug, Subcommand)]
+pub enum ScenarioAction {
+    /// Check a scenario file: against the schema (each problem with its place in the file:
+    /// path, line and column), then as the core reads it (the map loads, the start and the
+    /// goal are on the map and free, the system sets up and plans, the exercise's
+    /// parameters exist). Exits 0 when right, 1 when wrong, 2 when unreadable.
+    Check(CheckArgs),
+    /// Print the JSON Schema of scenario files (docs/scenario.schema.json).
+    Schema,
+}
+
+/// The options of `rtnav scenario check`.
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// The scenario file (JSON).
+    file: PathBuf,
+    #[command(flatten)]
+    root: RootOption,
+}
+
+/// `rtnav scenario ACTION`.
+pub fn scenario(action: ScenarioAction) -> CliResult<ExitCode> {
+    match action {
+        ScenarioAction::Check(args) => check(&args.file, args.root.root),
+        ScenarioAction::Schema => schema(),
+    }
+}
 
 /// `rtnav scenario schema`: the schema on standard output.
-pub(super) fn schema() -> CliResult<ExitCode> {
+fn schema() -> CliResult<ExitCode> {
     print!("{}", scenario_file::schema_text());
     Ok(ExitCode::SUCCESS)
 }
 
 /// `rtnav scenario check FILE` (module documentation).
-pub(super) fn check(path: &Path, root: Option<PathBuf>) -> CliResult<ExitCode> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read `{}`: {e}", path.display()))?;
+fn check(path: &Path, root: Option<PathBuf>) -> CliResult<ExitCode> {
+    let text = std::fs::read_to_string(path).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
     println!("scenario file {}", path.display());
     let problems = scenario_file::problems(&text);
     if !problems.is_empty() {
@@ -65,9 +98,10 @@ pub(super) fn check(path: &Path, root: Option<PathBuf>) -> CliResult<ExitCode> {
     }
 }
 
-/// The core's reading (module documentation, step 2): what it found, or what is wrong.
-fn core_check(path: &Path, text: &str, root: Option<PathBuf>) -> Result<Vec<String>, String> {
-    let scenario = Scenario::from_json(text).map_err(|e| e.to_string())?;
+/// The core's reading (module documentation, step 2; `rtnav::scenario_check`): what it
+/// found, one line each, or what is wrong.
+fn core_check(path: &Path, text: &str, root: Option<PathBuf>) -> Result<Vec<String>, Wrong> {
+    let scenario = Scenario::from_json(text).map_err(|e| Wrong::Read(Box::new(e.into())))?;
     let mut lines = Vec::new();
     let stem = path
         .file_name()
@@ -82,121 +116,45 @@ fn core_check(path: &Path, text: &str, root: Option<PathBuf>) -> Result<Vec<Stri
         ));
     }
     let root = root.unwrap_or_else(|| find_root(path, &scenario));
-    let resolver = rtnav::data::RepoResolver::new(&root);
-    let map = scenario.load_map(&resolver).map_err(|e| {
-        format!(
+    let found = check_scenario(&scenario, &RepoResolver::new(&root))
+        .map_err(|problem| Wrong::Core { problem, root })?;
+    lines.extend(found.iter().map(|f| format!("{:<14}{f}", label(f))));
+    Ok(lines)
+}
+
+/// The label of a finding's line.
+fn label(finding: &Finding) -> &'static str {
+    match finding {
+        _ if finding.is_note() => "note",
+        Finding::Map { .. } => "map",
+        Finding::Route { .. } | Finding::PlanFailsAsExpected { .. } => "plan",
+        _ => "exercise",
+    }
+}
+
+/// What is wrong with a scenario file as the core reads it.
+#[derive(Debug, thiserror::Error)]
+enum Wrong {
+    /// The core does not read it.
+    #[error("{0}")]
+    Read(Box<rtnav::Error>),
+    /// The core reads it and finds it wrong.
+    #[error("{}", core_words(problem, root))]
+    Core {
+        problem: ScenarioProblem,
+        /// The folder its paths were read from.
+        root: PathBuf,
+    },
+}
+
+/// A problem the core found; a map that does not load with the folder its path is relative
+/// to.
+fn core_words(problem: &ScenarioProblem, root: &Path) -> String {
+    match problem {
+        ScenarioProblem::MapDoesNotLoad(e) => format!(
             "the map does not load (paths are relative to `{}`): {e}",
             root.display()
-        )
-    })?;
-    lines.push(format!(
-        "map           {} × {} cells of {} m",
-        map.width(),
-        map.height(),
-        map.grid_size()
-    ));
-    for (what, pose) in [("start", scenario.start), ("goal", scenario.goal)] {
-        let cell = map.world_to_cell(pose.x, pose.y).ok_or_else(|| {
-            let (ox, oy) = map.origin();
-            format!(
-                "the {what} ({}, {}) is off the map, which covers x {ox} to {} and y {oy} to {} m",
-                pose.x,
-                pose.y,
-                ox + map.width() as f64 * map.grid_size(),
-                oy + map.height() as f64 * map.grid_size()
-            )
-        })?;
-        let (i, j) = (cell.0 as i64, cell.1 as i64);
-        if map.is_obstacle(i, j) {
-            return Err(format!(
-                "the {what} ({}, {}) is inside an obstacle (cell {i}, {j})",
-                pose.x, pose.y
-            ));
-        }
+        ),
+        other => other.to_string(),
     }
-    let system = setup::build(
-        &scenario,
-        &resolver,
-        &Setup::of(&scenario),
-        BuildOptions::default(),
-    )
-    .map_err(|e| format!("the core cannot set it up: {e}"))?;
-    let radius = system
-        .wiring()
-        .config(ComponentKind::MotorControl)
-        .and_then(|c| Ok(c.value("radiusOfBodyArea")?))
-        .unwrap_or(0.0);
-    for (what, pose) in [("start", scenario.start), ("goal", scenario.goal)] {
-        if let Some(cell) = map.world_to_cell(pose.x, pose.y) {
-            let d = map.obstacle_distance(cell);
-            if d < radius {
-                lines.push(format!(
-                    "note          the {what} is {d:.2} m from an obstacle, less than the body's \
-                     radius ({radius} m, MotorControl.radiusOfBodyArea): the robot touches it there"
-                ));
-            }
-        }
-    }
-    let route = system.mission().route().len();
-    let failure = system
-        .mission()
-        .failure()
-        .map(|f| Words::english().event(f));
-    match (failure, scenario.expect.outcome) {
-        (Some(why), OutcomeKind::PlanningFailed) => {
-            lines.push(format!("plan          fails, as expected: {why}"));
-        }
-        (Some(why), _) => {
-            return Err(format!(
-                "no plan from the start to the goal ({why}); the scenario expects `{}`",
-                serde_json::to_value(scenario.expect.outcome)
-                    .ok()
-                    .and_then(|v| v.as_str().map(str::to_owned))
-                    .unwrap_or_default()
-            ));
-        }
-        (None, _) => lines.push(format!("plan          a route of {route} cells")),
-    }
-    if let Some(exercise) = &scenario.exercise {
-        for name in &exercise.may_change {
-            let Some((component, param)) = name.split_once('.') else {
-                continue;
-            };
-            let kind = ComponentKind::from_name(component).map_err(|e| e.to_string())?;
-            let known = system
-                .wiring()
-                .config(kind)
-                .is_ok_and(|c| c.specs().iter().any(|s| s.name == param));
-            if !known {
-                return Err(format!(
-                    "exercise: may_change `{name}`: {component} has no parameter `{param}`"
-                ));
-            }
-        }
-        // The rule every exercise holds: a value the Parameters tab warns about never
-        // passes. One the scenario sets and the student may not change fails every answer.
-        for warned in ParameterWarning::warned(system.wiring()) {
-            if !exercise.may_change.contains(&warned) {
-                return Err(format!(
-                    "exercise: the Parameters tab warns about {warned} as the scenario sets it, \
-                     and the exercise does not let it change: no answer can pass"
-                ));
-            }
-            lines.push(format!(
-                "note          the Parameters tab warns about {warned} as given: an answer must \
-                 change it"
-            ));
-        }
-        lines.push(format!(
-            "exercise      {} check{}; may change {}",
-            exercise.checks.len(),
-            if exercise.checks.len() == 1 { "" } else { "s" },
-            if exercise.may_change.is_empty() {
-                "nothing".to_owned()
-            } else {
-                exercise.may_change.join(", ")
-            }
-        ));
-    }
-    Ok(lines)
 }

@@ -49,6 +49,17 @@ fn data<T: Serialize>(value: &T) -> Value {
     serde_json::to_value(value).unwrap_or(Value::Null)
 }
 
+/// Why a text is not a catalogue.
+#[derive(Debug, thiserror::Error)]
+pub enum CatalogueError {
+    /// Not JSON.
+    #[error(transparent)]
+    Json(#[from] serde_json::Error),
+    /// JSON, but not an object.
+    #[error("a catalogue is a JSON object of strings")]
+    NotAnObject,
+}
+
 impl Words {
     /// The English catalogue (`web/i18n/en.json`).
     pub fn english() -> &'static Words {
@@ -58,11 +69,10 @@ impl Words {
     }
 
     /// A catalogue from its JSON text (a flat object of strings).
-    pub fn from_json(text: &str) -> Result<Words, String> {
-        match serde_json::from_str(text) {
-            Ok(Value::Object(text)) => Ok(Words { text }),
-            Ok(_) => Err("a catalogue is a JSON object of strings".to_owned()),
-            Err(e) => Err(e.to_string()),
+    pub fn from_json(text: &str) -> Result<Words, CatalogueError> {
+        match serde_json::from_str(text)? {
+            Value::Object(text) => Ok(Words { text }),
+            _ => Err(CatalogueError::NotAnObject),
         }
     }
 

@@ -21,11 +21,14 @@ pub mod interfaces;
 pub mod local;
 pub mod map;
 pub mod motion;
+pub mod plan_preview;
 pub mod present;
 pub mod reason;
 #[cfg(feature = "render")]
 pub mod render;
 pub mod rtc;
+pub mod scenario_check;
+pub mod scenario_data;
 pub mod system;
 
 pub use errors::{Error, ErrorDetail, Result};

@@ -198,3 +198,59 @@ fn the_wasm_layer_reaches_nothing_past_the_session_and_the_screen() {
         Vec::<&str>::new()
     );
 }
+
+/// The dependencies only the fuzzer needs (`stress/`): its PNG maps and share tokens.
+const FUZZER_ONLY: [&str; 4] = ["png", "image", "base64", "miniz_oxide"];
+
+/// The names of the dependencies a `Cargo.toml` lists (every `*dependencies` table).
+fn dependency_names(manifest: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    let mut in_deps = false;
+    for line in manifest.lines().map(str::trim) {
+        if line.starts_with('[') {
+            in_deps = line.trim_matches(['[', ']']).ends_with("dependencies");
+        } else if in_deps && !line.starts_with('#') {
+            let key = line.split(['=', '.']).next().unwrap_or("").trim();
+            if !key.is_empty() {
+                names.push(key.trim_matches('"').to_owned());
+            }
+        }
+    }
+    names
+}
+
+#[test]
+fn the_runner_has_no_counting_allocator_and_no_dependency_only_the_fuzzer_needs() {
+    let cli = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cli");
+    let mut files = Vec::new();
+    rust_files(&cli.join("src"), &mut files);
+    assert!(files.len() >= 5, "{files:?}");
+    let allocating: Vec<String> = files
+        .iter()
+        .filter(|f| {
+            std::fs::read_to_string(f)
+                .unwrap()
+                .contains("global_allocator")
+        })
+        .map(|f| f.display().to_string())
+        .collect();
+    assert!(
+        allocating.is_empty(),
+        "rtnav-cli installs an allocator (the counting one is rtnav-stress's): {allocating:?}"
+    );
+    let names = dependency_names(&std::fs::read_to_string(cli.join("Cargo.toml")).unwrap());
+    assert!(names.iter().any(|n| n == "rtnav"), "{names:?}");
+    let fuzzer_only: Vec<&String> = names
+        .iter()
+        .filter(|n| FUZZER_ONLY.contains(&n.as_str()))
+        .collect();
+    assert!(
+        fuzzer_only.is_empty(),
+        "rtnav-cli depends on what only the fuzzer needs: {fuzzer_only:?}"
+    );
+    // The check can fail: each form of a dependency is read.
+    let manifest = "[package]\nname = \"x\"\n[dependencies]\npng.workspace = true\n\
+                    # image = \"1\"\nbase64 = \"0.23\"\n[dev-dependencies]\n\
+                    miniz_oxide = { workspace = true }\n[lints]\nworkspace = true\n";
+    assert_eq!(dependency_names(manifest), ["png", "base64", "miniz_oxide"]);
+}

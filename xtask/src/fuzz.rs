@@ -1,5 +1,5 @@
 //! `cargo xtask fuzz [--seconds N] [--seed S] [--target NAME]…`: the project's fuzzer
-//! (`rtnav fuzz`, `cli/src/fuzz/`) in release mode, on stable Rust. `--seconds` is the wall
+//! (`rtnav-stress fuzz`, `stress/src/fuzz/`) in release mode, on stable Rust. `--seconds` is the wall
 //! time in all, shared evenly by the targets (default 300); the seed is printed (from the
 //! clock unless given), and every failure with the command that replays it. The kept
 //! regression cases (`fixtures/fuzz-regressions/`) run first, and a failing input is written
@@ -8,7 +8,7 @@
 //! `cargo xtask test` has a fuzz stage ([`test_stage`]): the readers of a person's text and
 //! files, each for [`STAGE_SECONDS_PER_TARGET`] with a fresh seed (printed), after their kept
 //! regression cases, with the debug runner `cargo test` has already built. The short,
-//! fixed-seed run of `cli/tests/fuzz.rs` is part of `cargo test`.
+//! fixed-seed run of `stress/tests/fuzz.rs` is part of `cargo test`.
 
 use crate::Result;
 use crate::tools::{cargo, repo_root, run, target_dir};
@@ -70,7 +70,7 @@ pub fn fuzz(rest: &[String]) -> Result {
             "--release",
             "-q",
             "-p",
-            "rtnav-cli",
+            "rtnav-stress",
             "--",
             "fuzz",
             "--seconds",
@@ -87,7 +87,7 @@ pub fn fuzz(rest: &[String]) -> Result {
 pub fn test_stage() -> Result<Option<String>> {
     let seconds = STAGE_SECONDS_PER_TARGET * STAGE_TARGETS.len() as f64;
     let mut c = cargo();
-    c.args(["run", "-q", "-p", "rtnav-cli", "--", "fuzz", "--seconds"])
+    c.args(["run", "-q", "-p", "rtnav-stress", "--", "fuzz", "--seconds"])
         .arg(seconds.to_string())
         .arg("--corpus")
         .arg(repo_root().join("fixtures/fuzz-regressions"))

@@ -16,8 +16,8 @@
 //! cargo xtask e2e [FILE...]       the page's build and the browser tests alone
 //! cargo xtask types               write web/types from the Rust views, type-check the page
 //! cargo xtask bench               the performance table (docs/performance.md)
-//! cargo xtask fuzz [--seconds N]  the fuzzer in release mode (default 300 s in all)
-//! cargo xtask soak [--hours H]    hours of simulated closed loop (default 24 h)
+//! cargo xtask fuzz [--seconds N]  the fuzzer (rtnav-stress) in release mode (default 300 s)
+//! cargo xtask soak [--hours H]    hours of simulated closed loop (rtnav-stress; default 24 h)
 //! ```
 
 mod bench;
@@ -73,13 +73,15 @@ commands:
                        a sub-path); --stage runs only the stages whose name has WORD
   e2e [FILE...]        the page's build and the browser end-to-end tests alone (only
                        the named tests/e2e files, e.g. page.test.mjs, if any)
-  fuzz [--seconds N] [--seed S] [--target NAME]...
-                       fuzz the readers and the hostile calls in release mode for N s in
-                       all (default 300); prints per target the inputs tried, the failures
-                       (with the command that replays each) and the slowest input
+  fuzz [--seconds N] [--cases N] [--seed S] [--target NAME]... [--case I]
+                       fuzz the readers and the hostile calls (`rtnav-stress fuzz`, release
+                       mode) for N s in all (default 300), or N inputs per target; the
+                       kept regression cases first; prints per target the inputs tried, the
+                       failures (with the command that replays each) and the slowest input
   soak [--hours H] [--scenario FILE] [--seed S]
                        drive open_field and the Willow Garage ROS map (or FILE) for H
-                       simulated hours (default 24) with random goals and map edits; fails
+                       simulated hours (default 24) with random goals and map edits
+                       (`rtnav-stress soak`, release mode); fails
                        on a bump, an error, a stuck period or growing memory
   help                 this text
 

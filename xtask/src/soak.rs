@@ -1,5 +1,5 @@
 //! `cargo xtask soak [--hours H] [--scenario FILE] [--seed S]`: the closed loop for hours of
-//! simulated time (`rtnav soak`, `cli/src/soak.rs`) in release mode. Without `--scenario`, it
+//! simulated time (`rtnav-stress soak`, `stress/src/soak.rs`) in release mode. Without `--scenario`, it
 //! soaks open_field and then the Willow Garage ROS map from the shared data (skipped, with a
 //! line saying so, when the data is absent). Fails on a bump, a panic, a component error, a
 //! stuck period or growing memory.
@@ -50,7 +50,7 @@ pub fn soak(rest: &[String]) -> Result {
             "--release",
             "-q",
             "-p",
-            "rtnav-cli",
+            "rtnav-stress",
             "--",
             "soak",
             "--hours",
@@ -78,7 +78,7 @@ pub fn test_stage() -> Result<Option<String>> {
         "run",
         "-q",
         "-p",
-        "rtnav-cli",
+        "rtnav-stress",
         "--",
         "soak",
         "--hours",

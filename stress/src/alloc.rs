@@ -4,7 +4,7 @@
 //! bytes live in the process (the soak's memory figure).
 //!
 //! A binary installs it with
-//! `#[global_allocator] static A: rtnav_cli::alloc::Counting = rtnav_cli::alloc::Counting;`;
+//! `#[global_allocator] static A: rtnav_stress::alloc::Counting = rtnav_stress::alloc::Counting;`;
 //! without that, [`installed`] is false and the figures stay zero.
 // The `GlobalAlloc` contract needs `unsafe`; every call goes straight to `System`.
 #![allow(unsafe_code)]

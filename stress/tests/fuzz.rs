@@ -8,13 +8,13 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use rtnav::system::System;
-use rtnav_cli::alloc::Counting;
-use rtnav_cli::fuzz::{self, Options, Target, TargetReport};
+use rtnav_stress::alloc::Counting;
+use rtnav_stress::fuzz::{self, Options, Target, TargetReport};
 
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
 
-/// The seed of the CI run (any failure prints it with its case number for `rtnav fuzz`).
+/// The seed of the CI run (any failure prints it with its case number for `rtnav-stress fuzz`).
 const SEED: u64 = 18;
 
 /// The kept regression cases, under the project's root.
@@ -155,7 +155,7 @@ fn panics_slowness_and_allocation_are_reported() {
         fn seeds(&self) -> &[fuzz::Case] {
             &[]
         }
-        fn generate(&self, rng: &mut rtnav_cli::rng::Rng) -> fuzz::Case {
+        fn generate(&self, rng: &mut rtnav_stress::rng::Rng) -> fuzz::Case {
             fuzz::Case::one(vec![(rng.next_u64() % 3) as u8])
         }
         fn run(&mut self, case: &fuzz::Case) -> Result<(), String> {
@@ -187,7 +187,7 @@ fn panics_slowness_and_allocation_are_reported() {
 
 /// The largest map the limit allows (4096 × 4096 = `MAX_CELLS`) as a 16 KiB PNG: accepted,
 /// within the allocation bound; the time it takes is printed (run it with `--release`:
-/// `cargo test --release -p rtnav-cli --test fuzz -- --ignored largest`).
+/// `cargo test --release -p rtnav-stress --test fuzz -- --ignored largest`).
 #[test]
 #[ignore = "a measurement: 16 Mi cells take seconds in a debug build"]
 fn the_largest_legal_png_map_loads_within_the_bound() {
@@ -207,7 +207,7 @@ fn the_largest_legal_png_map_loads_within_the_bound() {
                 occupied_thresh: 0.65\nfree_thresh: 0.196\n";
     let started = std::time::Instant::now();
     let (r, usage) =
-        rtnav_cli::alloc::measure(|| ros::load(yaml, &png, &ros::RosLoadOptions::default()));
+        rtnav_stress::alloc::measure(|| ros::load(yaml, &png, &ros::RosLoadOptions::default()));
     let took = started.elapsed();
     let map = r.unwrap().map;
     assert_eq!(map.cells().len(), MAX_CELLS);

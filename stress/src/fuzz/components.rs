@@ -11,12 +11,16 @@ use rtnav::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapMaintenance,
     MotorControl, PhysicsSim,
 };
+use rtnav::components::{
+    DriveControlParams, GlobalPathPlanningParams, LocalPathPlanningParams, LocalizationParams,
+    MotorControlParams, PhysicsSimParams,
+};
 use rtnav::interfaces::{ControlPoints, Direction, GlobalPathCourse, Pose};
 use rtnav::map::{GridMap, MapUpdate};
 use rtnav::motion::PhysicsParams;
 use rtnav::rtc::{
-    Component, ConfigAccess, InPort, Tick, Time, TimedDouble, TimedDoubleSeq, TimedPosition,
-    TimedVelocity,
+    Component, ConfigAccess, InPort, ParamSpec, ParameterSet, Tick, Time, TimedDouble,
+    TimedDoubleSeq, TimedPosition, TimedVelocity,
 };
 
 use super::{Bytes, Case, REFUSED, Target};
@@ -30,11 +34,89 @@ const MAX_OPS: usize = 160;
 type Op<C> = Box<dyn Fn(&mut C) -> Option<bool>>;
 
 /// A component with the clock it is ticked by and sinks on its outputs.
-trait Subject: Sized {
+trait Subject: Sized + 'static {
+    /// The period it is executed with \[ns\].
+    const PERIOD_NS: u64;
+    /// Its parameters (by name, for [`parameter`]).
+    const SPECS: &'static [ParamSpec];
     fn make() -> Self;
+    /// The component.
+    fn component(&mut self) -> &mut dyn Component;
+    /// The time of its last execution \[ns\].
+    fn clock(&mut self) -> &mut u64;
     fn fingerprint(&self) -> String;
     fn decode(b: &mut Bytes<'_>) -> (&'static str, Op<Self>);
 }
+
+// ------------------------------------------------------------------ the lifecycle, once
+
+/// The configuration applied and the component activated at `t_ns`, as an execution context
+/// activates it.
+fn activate(c: &mut dyn Component, t_ns: u64, period_ns: u64) {
+    if let Some(cfg) = c.configuration() {
+        cfg.apply_on_activation();
+    }
+    let _ = c.on_activated(&tick(t_ns, period_ns));
+}
+
+/// `n` executions, one period apart.
+fn execute<S: Subject>(n: u64) -> (&'static str, Op<S>) {
+    (
+        "execute",
+        Box::new(move |s: &mut S| {
+            for _ in 0..n {
+                *s.clock() += S::PERIOD_NS;
+                let t = *s.clock();
+                let _ = s.component().on_execute(&tick(t, S::PERIOD_NS));
+            }
+            None
+        }),
+    )
+}
+
+/// Deactivated and activated again.
+fn reactivate<S: Subject>() -> (&'static str, Op<S>) {
+    (
+        "re-activate",
+        Box::new(|s: &mut S| {
+            let t = *s.clock();
+            let _ = s.component().on_deactivated(&tick(t, S::PERIOD_NS));
+            activate(s.component(), t, S::PERIOD_NS);
+            None
+        }),
+    )
+}
+
+/// Reset (from the error state) and activated again.
+fn reset<S: Subject>() -> (&'static str, Op<S>) {
+    (
+        "reset",
+        Box::new(|s: &mut S| {
+            let t = *s.clock();
+            let _ = s.component().on_reset(&tick(t, S::PERIOD_NS));
+            activate(s.component(), t, S::PERIOD_NS);
+            None
+        }),
+    )
+}
+
+/// A parameter change with a hostile value ([`param_op`]).
+fn parameter<S: Subject>(b: &mut Bytes<'_>) -> (&'static str, Op<S>) {
+    (
+        "parameter",
+        param_op(
+            b,
+            |s: &mut S| {
+                s.component()
+                    .configuration()
+                    .unwrap_or_else(|| unreachable!("a subject with parameters"))
+            },
+            S::SPECS,
+        ),
+    )
+}
+
+// ------------------------------------------------------------------ hostile values
 
 /// A subject's state as the twins compare it.
 /// (`GridMap` and its cache stamp print without their ids: a map value's id tells only
@@ -167,7 +249,7 @@ fn update(b: &mut Bytes<'_>) -> MapUpdate {
 fn param_op<C: 'static>(
     b: &mut Bytes<'_>,
     config: fn(&mut C) -> &mut dyn ConfigAccess,
-    specs: &'static [rtnav::rtc::ParamSpec],
+    specs: &'static [ParamSpec],
 ) -> Op<C> {
     let name = if b.u8() < 240 && !specs.is_empty() {
         specs[b.below(specs.len())].name
@@ -218,6 +300,9 @@ struct Lpp {
 }
 
 impl Subject for Lpp {
+    const PERIOD_NS: u64 = 100_000_000;
+    const SPECS: &'static [ParamSpec] = <LocalPathPlanningParams as ParameterSet>::SPECS;
+
     fn make() -> Self {
         let mut c = LocalPathPlanning::new("LocalPathPlanning0");
         let gui = InPort::new("gui");
@@ -225,16 +310,21 @@ impl Subject for Lpp {
         c.invent_gui_cons.connect(&gui);
         c.drive_cons.connect(&drive);
         c.set_grid_map(small_map());
-        if let Some(cfg) = c.configuration() {
-            cfg.apply_on_activation();
-        }
-        let _ = c.on_activated(&tick(0, 100_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self {
             c,
             t: 0,
             gui,
             drive,
         }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -346,14 +436,7 @@ impl Subject for Lpp {
                     None
                 }),
             ),
-            6 => (
-                "parameter",
-                param_op(
-                    b,
-                    |s: &mut Self| s.c.configuration().unwrap_or_else(|| unreachable!()),
-                    <rtnav::components::LocalPathPlanningParams as rtnav::rtc::ParameterSet>::SPECS,
-                ),
-            ),
+            6 => parameter(b),
             7 => {
                 let p: Vec<f64> = (0..3).map(|_| b.f64_in(-1.0, 11.0)).collect();
                 let d = b.f64_in(0.0, 1.0);
@@ -380,19 +463,7 @@ impl Subject for Lpp {
                     None
                 }),
             ),
-            _ => {
-                let n = 1 + b.below(5) as u64;
-                (
-                    "execute",
-                    Box::new(move |s: &mut Self| {
-                        for _ in 0..n {
-                            s.t += 100_000_000;
-                            let _ = s.c.on_execute(&tick(s.t, 100_000_000));
-                        }
-                        None
-                    }),
-                )
-            }
+            _ => execute(1 + b.below(5) as u64),
         }
     }
 }
@@ -406,16 +477,24 @@ struct Gpp {
 }
 
 impl Subject for Gpp {
+    const PERIOD_NS: u64 = 100_000_000;
+    const SPECS: &'static [ParamSpec] = <GlobalPathPlanningParams as ParameterSet>::SPECS;
+
     fn make() -> Self {
         let mut c = GlobalPathPlanning::new("GlobalPathPlanning0");
         let out = InPort::new("course");
         c.global_path_course.connect(&out);
         c.set_map(small_map());
-        if let Some(cfg) = c.configuration() {
-            cfg.apply_on_activation();
-        }
-        let _ = c.on_activated(&tick(0, 100_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self { c, t: 0, out }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -429,10 +508,8 @@ impl Subject for Gpp {
                 (
                     "SetPosition",
                     Box::new(move |s: &mut Self| {
-                        ok(s.c.set_position(
-                            Pose::new(a[0], a[1], a[2]),
-                            Pose::new(a[3], a[4], a[5]),
-                        ))
+                        ok(s.c
+                            .set_position(Pose::new(a[0], a[1], a[2]), Pose::new(a[3], a[4], a[5])))
                     }),
                 )
             }
@@ -457,19 +534,8 @@ impl Subject for Gpp {
                     }),
                 )
             }
-            3 => (
-                "parameter",
-                param_op(
-                    b,
-                    |s: &mut Self| s.c.configuration().unwrap_or_else(|| unreachable!()),
-                    <rtnav::components::GlobalPathPlanningParams as rtnav::rtc::ParameterSet>::SPECS,
-                ),
-            ),
-            _ => ("execute", Box::new(|s: &mut Self| {
-                s.t += 100_000_000;
-                let _ = s.c.on_execute(&tick(s.t, 100_000_000));
-                None
-            })),
+            3 => parameter(b),
+            _ => execute(1),
         }
     }
 }
@@ -484,22 +550,30 @@ struct Motor {
 }
 
 impl Subject for Motor {
+    const PERIOD_NS: u64 = 1_000_000;
+    const SPECS: &'static [ParamSpec] = <MotorControlParams as ParameterSet>::SPECS;
+
     fn make() -> Self {
         let mut c = MotorControl::default();
         let torque = InPort::new("torque");
         let pose = InPort::new("pose");
         c.torque.connect(&torque);
         c.out_simulated_position_to_localization.connect(&pose);
-        if let Some(cfg) = c.configuration() {
-            cfg.apply_on_activation();
-        }
-        let _ = c.on_activated(&tick(0, 1_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self {
             c,
             t: 0,
             torque,
             pose,
         }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -535,14 +609,7 @@ impl Subject for Motor {
                     }),
                 )
             }
-            2 => (
-                "parameter",
-                param_op(
-                    b,
-                    |s: &mut Self| s.c.configuration().unwrap_or_else(|| unreachable!()),
-                    <rtnav::components::MotorControlParams as rtnav::rtc::ParameterSet>::SPECS,
-                ),
-            ),
+            2 => parameter(b),
             3 | 4 => {
                 let msg = seq(b, 0, 2, -10.0, 10.0);
                 let relative = msg.tm == Time::from_nanos(0);
@@ -589,30 +656,8 @@ impl Subject for Motor {
                     }),
                 )
             }
-            7 => (
-                "re-activate",
-                Box::new(|s: &mut Self| {
-                    let _ = s.c.on_deactivated(&tick(s.t, 1_000_000));
-                    if let Some(cfg) = s.c.configuration() {
-                        cfg.apply_on_activation();
-                    }
-                    let _ = s.c.on_activated(&tick(s.t, 1_000_000));
-                    None
-                }),
-            ),
-            _ => {
-                let n = 1 + b.below(40) as u64;
-                (
-                    "execute",
-                    Box::new(move |s: &mut Self| {
-                        for _ in 0..n {
-                            s.t += 1_000_000;
-                            let _ = s.c.on_execute(&tick(s.t, 1_000_000));
-                        }
-                        None
-                    }),
-                )
-            }
+            7 => reactivate(),
+            _ => execute(1 + b.below(40) as u64),
         }
     }
 }
@@ -626,15 +671,23 @@ struct Loc {
 }
 
 impl Subject for Loc {
+    const PERIOD_NS: u64 = 1_000_000;
+    const SPECS: &'static [ParamSpec] = <LocalizationParams as ParameterSet>::SPECS;
+
     fn make() -> Self {
         let mut c = Localization::default();
         let out = InPort::new("pose");
         c.out_current_position.connect(&out);
-        if let Some(cfg) = c.configuration() {
-            cfg.apply_on_activation();
-        }
-        let _ = c.on_activated(&tick(0, 1_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self { c, t: 0, out }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -652,14 +705,7 @@ impl Subject for Loc {
                     }),
                 )
             }
-            1 => (
-                "parameter",
-                param_op(
-                    b,
-                    |s: &mut Self| s.c.configuration().unwrap_or_else(|| unreachable!()),
-                    <rtnav::components::LocalizationParams as rtnav::rtc::ParameterSet>::SPECS,
-                ),
-            ),
+            1 => parameter(b),
             2 => {
                 let msg = seq(b, 0, 4, -5.0, 5.0);
                 (
@@ -684,30 +730,8 @@ impl Subject for Loc {
                     }),
                 )
             }
-            4 => (
-                "reset",
-                Box::new(|s: &mut Self| {
-                    let _ = s.c.on_reset(&tick(s.t, 1_000_000));
-                    if let Some(cfg) = s.c.configuration() {
-                        cfg.apply_on_activation();
-                    }
-                    let _ = s.c.on_activated(&tick(s.t, 1_000_000));
-                    None
-                }),
-            ),
-            _ => {
-                let n = 1 + b.below(20) as u64;
-                (
-                    "execute",
-                    Box::new(move |s: &mut Self| {
-                        for _ in 0..n {
-                            s.t += 1_000_000;
-                            let _ = s.c.on_execute(&tick(s.t, 1_000_000));
-                        }
-                        None
-                    }),
-                )
-            }
+            4 => reset(),
+            _ => execute(1 + b.below(20) as u64),
         }
     }
 }
@@ -721,6 +745,9 @@ struct Phys {
 }
 
 impl Subject for Phys {
+    const PERIOD_NS: u64 = 1_000_000;
+    const SPECS: &'static [ParamSpec] = <PhysicsSimParams as ParameterSet>::SPECS;
+
     fn make() -> Self {
         let mut c = PhysicsSim::new("PhysicsSim0", PhysicsParams::default())
             .unwrap_or_else(|_| unreachable!("the default model is valid"));
@@ -728,11 +755,16 @@ impl Subject for Phys {
         c.angle.connect(&angle);
         c.set_map(Some(small_map()));
         let _ = c.set_pose(Pose::new(2.25, 2.25, 0.0));
-        if let Some(cfg) = c.configuration() {
-            cfg.apply_on_activation();
-        }
-        let _ = c.on_activated(&tick(0, 1_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self { c, t: 0, angle }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -755,14 +787,7 @@ impl Subject for Phys {
                     Box::new(move |s: &mut Self| ok(s.c.map_update(&u))),
                 )
             }
-            2 => (
-                "parameter",
-                param_op(
-                    b,
-                    |s: &mut Self| s.c.configuration().unwrap_or_else(|| unreachable!()),
-                    <rtnav::components::PhysicsSimParams as rtnav::rtc::ParameterSet>::SPECS,
-                ),
-            ),
+            2 => parameter(b),
             3 | 4 => {
                 let msg = seq(b, 0, 2, -5.0, 5.0);
                 (
@@ -783,19 +808,7 @@ impl Subject for Phys {
                     }),
                 )
             }
-            _ => {
-                let n = 1 + b.below(40) as u64;
-                (
-                    "execute",
-                    Box::new(move |s: &mut Self| {
-                        for _ in 0..n {
-                            s.t += 1_000_000;
-                            let _ = s.c.on_execute(&tick(s.t, 1_000_000));
-                        }
-                        None
-                    }),
-                )
-            }
+            _ => execute(1 + b.below(40) as u64),
         }
     }
 }
@@ -810,17 +823,25 @@ struct Drive {
 }
 
 impl Subject for Drive {
+    const PERIOD_NS: u64 = 20_000_000;
+    const SPECS: &'static [ParamSpec] = <DriveControlParams as ParameterSet>::SPECS;
+
     fn make() -> Self {
         let mut c = DriveControl::default();
         let vel = InPort::new("velocity");
         c.target_velocity.connect(&vel);
         let stop = InPort::new("safety stop");
         c.safety_stop.connect(&stop);
-        if let Some(cfg) = c.configuration() {
-            cfg.apply_on_activation();
-        }
-        let _ = c.on_activated(&tick(0, 20_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self { c, t: 0, vel, stop }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -851,14 +872,7 @@ impl Subject for Drive {
                     Box::new(move |s: &mut Self| ok(s.c.set_body_radius(r))),
                 )
             }
-            0 => (
-                "parameter",
-                param_op(
-                    b,
-                    |s: &mut Self| s.c.configuration().unwrap_or_else(|| unreachable!()),
-                    <rtnav::components::DriveControlParams as rtnav::rtc::ParameterSet>::SPECS,
-                ),
-            ),
+            0 => parameter(b),
             1 => {
                 let n = b.length(6, 2000);
                 let points: Vec<(f64, f64)> = (0..n)
@@ -899,19 +913,7 @@ impl Subject for Drive {
                     }),
                 )
             }
-            _ => {
-                let n = 1 + b.below(20) as u64;
-                (
-                    "execute",
-                    Box::new(move |s: &mut Self| {
-                        for _ in 0..n {
-                            s.t += 20_000_000;
-                            let _ = s.c.on_execute(&tick(s.t, 20_000_000));
-                        }
-                        None
-                    }),
-                )
-            }
+            _ => execute(1 + b.below(20) as u64),
         }
     }
 }
@@ -925,13 +927,24 @@ struct Maint {
 }
 
 impl Subject for Maint {
+    const PERIOD_NS: u64 = 100_000_000;
+    const SPECS: &'static [ParamSpec] = &[];
+
     fn make() -> Self {
         let mut c = MapMaintenance::new("MapMaintenance0");
         let out = InPort::new("update");
         c.map_update_out.connect(&out);
         c.set_map(small_map());
-        let _ = c.on_activated(&tick(0, 100_000_000));
+        activate(&mut c, 0, Self::PERIOD_NS);
         Self { c, t: 0, out }
+    }
+
+    fn component(&mut self) -> &mut dyn Component {
+        &mut self.c
+    }
+
+    fn clock(&mut self) -> &mut u64 {
+        &mut self.t
     }
 
     fn fingerprint(&self) -> String {
@@ -954,24 +967,24 @@ impl Subject for Maint {
                     None
                 }),
             ),
-            _ => {
-                let n = 1 + b.below(10) as u64;
-                (
-                    "execute",
-                    Box::new(move |s: &mut Self| {
-                        for _ in 0..n {
-                            s.t += 100_000_000;
-                            let _ = s.c.on_execute(&tick(s.t, 100_000_000));
-                        }
-                        None
-                    }),
-                )
-            }
+            _ => execute(1 + b.below(10) as u64),
         }
     }
 }
 
 // ------------------------------------------------------------------ the target
+
+/// The subjects by name; an input's first byte chooses one.
+type Twins = fn(&[u8]) -> Result<(), String>;
+const SUBJECTS: [(&str, Twins); 7] = [
+    ("LocalPathPlanning", twins::<Lpp>),
+    ("GlobalPathPlanning", twins::<Gpp>),
+    ("MotorControl", twins::<Motor>),
+    ("Localization", twins::<Loc>),
+    ("PhysicsSim", twins::<Phys>),
+    ("DriveControl", twins::<Drive>),
+    ("MapMaintenance", twins::<Maint>),
+];
 
 /// Every component's services, parameters and ports with hostile values, against a twin.
 #[derive(Debug)]
@@ -1002,27 +1015,8 @@ impl Target for Components {
             Some((w, rest)) => (*w, rest),
             None => (0, &[][..]),
         };
-        let r = match which % 7 {
-            0 => twins::<Lpp>(rest),
-            1 => twins::<Gpp>(rest),
-            2 => twins::<Motor>(rest),
-            3 => twins::<Loc>(rest),
-            4 => twins::<Phys>(rest),
-            5 => twins::<Drive>(rest),
-            _ => twins::<Maint>(rest),
-        };
-        r.map_err(|e| {
-            let names = [
-                "LocalPathPlanning",
-                "GlobalPathPlanning",
-                "MotorControl",
-                "Localization",
-                "PhysicsSim",
-                "DriveControl",
-                "MapMaintenance",
-            ];
-            format!("{}: {e}", names[usize::from(which % 7)])
-        })
+        let (name, run) = SUBJECTS[usize::from(which) % SUBJECTS.len()];
+        run(rest).map_err(|e| format!("{name}: {e}"))
     }
 
     fn alloc_bound(&self, _case: &Case) -> u64 {

@@ -36,7 +36,8 @@ use rtnav::interfaces::{Direction, Pose};
 use rtnav::map::{Cell, GridMap, MapUpdate, within_dmin};
 use rtnav::rtc::Time;
 use rtnav::system::{
-    ARRIVAL_HEADING_DEG, DEFAULT_TELEMETRY_CAPACITY, EventKind, Input, System, SystemState,
+    ARRIVAL_HEADING_DEG, DEFAULT_TELEMETRY_CAPACITY, EventKind, Input, Scenario, System,
+    SystemState,
 };
 
 use crate::alloc;
@@ -80,6 +81,20 @@ impl SoakOptions {
             dmin: LocalPathPlanningParams::default().dmin,
             body_radius: MotorControlParams::default().radius_of_body_area,
         }
+    }
+
+    /// [`SoakOptions::new`] with the `dmin` `scenario` gives LocalPathPlanning, if it sets
+    /// one.
+    pub fn of_scenario(hours: f64, seed: u64, scenario: &Scenario) -> Self {
+        let mut options = Self::new(hours, seed);
+        if let Some(d) = scenario
+            .config
+            .get("LocalPathPlanning")
+            .and_then(|c| c.get("dmin"))
+        {
+            options.dmin = *d;
+        }
+        options
     }
 }
 

@@ -13,7 +13,7 @@
 //!    refused call changes nothing (compared with a twin that never got it).
 //!
 //! Input `i` of target `t` under seed `s` is a function of `(s, t, i)` alone (the corpus is
-//! the fixed fixture inputs), so `rtnav fuzz --seed s --target t --case i` replays a failure
+//! the fixed fixture inputs), so `rtnav-stress fuzz --seed s --target t --case i` replays a failure
 //! exactly. The run is bounded by time per target ([`Options::per_target`]) or by a number of
 //! cases ([`Options::cases`]).
 //!
@@ -26,9 +26,9 @@
 //!
 //! **Kept regression cases** (`fixtures/fuzz-regressions/TARGET/`): every input that once
 //! failed is kept as a file there and replayed first by every run that is given the folder
-//! ([`Options::corpus`]: `rtnav fuzz --corpus`, the fuzz stage of `cargo xtask test`) and by
-//! `cli/tests/fuzz.rs`. A failing input is written out as such a file when the run is given
-//! [`Options::save`] (`rtnav fuzz --save DIR`), ready to be kept.
+//! ([`Options::corpus`]: `rtnav-stress fuzz --corpus`, the fuzz stage of `cargo xtask test`) and by
+//! `stress/tests/fuzz.rs`. A failing input is written out as such a file when the run is given
+//! [`Options::save`] (`rtnav-stress fuzz --save DIR`), ready to be kept.
 
 pub mod components;
 pub mod readers;
@@ -114,7 +114,7 @@ impl Case {
 
 /// A fuzz target.
 pub trait Target {
-    /// Its name (`rtnav fuzz --target NAME`).
+    /// Its name (`rtnav-stress fuzz --target NAME`).
     fn name(&self) -> &'static str;
     /// The fixture inputs mutated (may be empty: then every input is generated).
     fn seeds(&self) -> &[Case];
@@ -302,8 +302,8 @@ fn rtnav_frames() -> String {
             .get(i + 1)
             .filter(|n| n.starts_with("at "))
             .map_or("", |n| n);
-        // The core's frames (the `rtnav` binary's own frames are named `rtnav::` too).
-        if name.starts_with("rtnav::") && !at.contains("cli/src") && shown < 4 {
+        // The core's frames (the tools' own are named `rtnav_stress::`).
+        if name.starts_with("rtnav::") && shown < 4 {
             let _ = write!(out, "\n    in {name} {at}");
             shown += 1;
         }

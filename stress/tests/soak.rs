@@ -1,4 +1,4 @@
-//! The soak engine (`rtnav_cli::soak`): a few simulated minutes on open_field count goals,
+//! The soak engine (`rtnav_stress::soak`): a few simulated minutes on open_field count goals,
 //! arrivals and edits and find nothing wrong; a robot that stops while holding a goal is
 //! reported as a stuck period. (The one-hour soak is a stage of `cargo xtask test`.)
 
@@ -6,8 +6,8 @@ use std::path::PathBuf;
 
 use rtnav::data::RepoResolver;
 use rtnav::system::{BuildOptions, ComponentKind, Input, Scenario, Setup, System, setup};
-use rtnav_cli::alloc::Counting;
-use rtnav_cli::soak::{Soak, SoakOptions};
+use rtnav_stress::alloc::Counting;
+use rtnav_stress::soak::{Soak, SoakOptions};
 
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
@@ -43,7 +43,7 @@ fn a_short_soak_drives_to_goals_around_edits_and_finds_nothing_wrong() {
     assert!(r.goals >= 3 && r.arrivals + r.false_arrivals >= 2, "{r:#?}");
     assert!(r.edits_added >= 5, "{r:#?}");
     // False arrivals — `Arrived` facts the check refuses — are the system's arrival decision
-    // (spec §7, Decision 0.3), reported by the soak, which fails on them (`rtnav soak`, the
+    // (spec §7, Decision 0.3), reported by the soak, which fails on them (`rtnav-stress soak`, the
     // soak stage); they are printed above and left out here, where the soak engine is tested.
     let problems: Vec<String> = r
         .problems()
