@@ -24,7 +24,10 @@ fn the_file_that_holds_system_is_short_and_no_source_file_is_over_800_lines() {
     let system = std::fs::read_to_string(src().join("system/simulation/robot.rs")).unwrap();
     assert!(system.contains("pub struct System {"));
     let n = system.lines().count();
-    assert!(n <= 400, "system/simulation/robot.rs has {n} lines (at most 400)");
+    assert!(
+        n <= 400,
+        "system/simulation/robot.rs: {n} lines (at most 400)"
+    );
     let mut files = Vec::new();
     rust_files(&src(), &mut files);
     let long: Vec<String> = files

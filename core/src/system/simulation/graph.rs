@@ -5,13 +5,13 @@
 //!
 //! Nothing here is drawn by hand: the data ports are what each component lists
 //! ([`Component::ports`](crate::rtc::Component::ports)), the data connections what the
-//! wiring connected (`links.rs`), the service ports and connections the wiring's table of
+//! wiring connected (`wiring/connections.rs`), the service ports and connections the wiring's table of
 //! whom it calls, with the calls it made.
 
 use serde::Serialize;
 
-use super::links::{Peer, connection_id};
 use super::wiring::Wiring;
+use super::wiring::connections::{Peer, connection_id};
 use crate::rtc::{PortDirection, PortView, SampleView};
 use crate::system::vocabulary::kind::ComponentKind;
 

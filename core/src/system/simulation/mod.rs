@@ -15,7 +15,6 @@ pub(super) mod activity;
 pub(super) mod conf_bundle;
 pub(super) mod graph;
 pub(super) mod inspect;
-pub(super) mod links;
 pub(super) mod mission;
 pub(super) mod parameter_warning;
 pub(super) mod record;

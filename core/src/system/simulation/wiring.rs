@@ -8,7 +8,6 @@
 
 use core::fmt;
 
-use super::links::{Links, Services};
 use crate::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
     MotorControl, PhysicsSim, SetMapMessage,
@@ -27,8 +26,8 @@ use crate::system::vocabulary::events::EventKind;
 use crate::system::vocabulary::kind::ComponentKind;
 use crate::system::vocabulary::rates::Rates;
 
-mod connections;
-use connections::Call;
+pub(super) mod connections;
+use connections::{Links, ServiceCall, Services};
 
 /// What happened in one base tick, or in one request between ticks.
 #[derive(Debug, Clone, PartialEq)]
@@ -337,7 +336,7 @@ impl Wiring {
             let (width, height, grid_size) = (map.width(), map.height(), map.grid_size());
             self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_grid_map(map);
-            self.record_call(Call::SetMap(width, height, grid_size));
+            self.record_call(ServiceCall::SetMap(width, height, grid_size));
             self.map_loads += 1;
             self.facts.push(EventKind::MapLoaded {
                 width,
@@ -365,7 +364,7 @@ impl Wiring {
                 escaped: gpp.escaped_steps(),
             };
             self.facts.push(fact);
-            self.record_call(Call::GlobalPathCourse(course.num));
+            self.record_call(ServiceCall::GlobalPathCourse(course.num));
             let r = self
                 .get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_global_path(&course);
@@ -415,14 +414,14 @@ impl Wiring {
             // Bump detection calls MotorControl's `Stop` (spec §4 Decision).
             self.get_mut::<MotorControl>(ComponentKind::MotorControl)
                 .stop();
-            self.record_call(Call::Stop);
+            self.record_call(ServiceCall::Stop);
             self.facts.push(EventKind::Bump { report });
         }
         self.drain_lifecycle_events();
     }
 
     fn deliver_map_update(&mut self, u: &MapUpdate) {
-        self.record_call(Call::MapUpdate(u.x.len()));
+        self.record_call(ServiceCall::MapUpdate(u.x.len()));
         let mut problems = Vec::new();
         let r = self
             .get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
@@ -606,7 +605,7 @@ impl Wiring {
         let tm = Time::from_nanos(self.ec.time_ns());
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .clear();
-        let call = Call::LoadMap(map.width(), map.height());
+        let call = ServiceCall::LoadMap(map.width(), map.height());
         self.get_mut::<MapBuilder>(ComponentKind::MapBuilder)
             .load(map, tm);
         self.record_call(call);
@@ -621,7 +620,7 @@ impl Wiring {
         let changed = self
             .get_mut::<MapMaintenance>(ComponentKind::MapMaintenance)
             .map_update(update)?;
-        self.record_call(Call::EditMap(cells));
+        self.record_call(ServiceCall::EditMap(cells));
         self.facts.push(EventKind::MapUpdated { cells, changed });
         self.pump();
         Ok(changed)
@@ -670,7 +669,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .set_position(start, goal)?;
-        self.record_call(Call::SetPosition(start, goal, dir, place));
+        self.record_call(ServiceCall::SetPosition(start, goal, dir, place));
         self.facts.push(EventKind::GoalSet {
             start,
             goal,
@@ -693,7 +692,7 @@ impl Wiring {
         }
         self.get_mut::<GlobalPathPlanning>(ComponentKind::GlobalPathPlanning)
             .clear();
-        self.record_call(Call::Clear);
+        self.record_call(ServiceCall::Clear);
         self.facts.push(EventKind::Cleared);
     }
 
@@ -702,7 +701,7 @@ impl Wiring {
     pub fn safe_mode(&mut self) {
         self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
             .safe_mode();
-        self.record_call(Call::SafeMode);
+        self.record_call(ServiceCall::SafeMode);
         self.facts.push(EventKind::SafeMode);
     }
 
@@ -711,7 +710,7 @@ impl Wiring {
     pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
         self.get_mut::<MotorControl>(ComponentKind::MotorControl)
             .set_pd_gain(p_l, p_r, d_l, d_r)?;
-        self.record_call(Call::SetPdGain([p_l, p_r, d_l, d_r]));
+        self.record_call(ServiceCall::SetPdGain([p_l, p_r, d_l, d_r]));
         self.facts.push(EventKind::GainsSet { p_l, p_r, d_l, d_r });
         Ok(())
     }
