@@ -83,20 +83,14 @@ impl Mark {
     }
 }
 
-/// What a history starts from: the system, its timeline, the map edits and the exercise's
-/// watch.
-pub(in crate::system) type Parts<'a> = (
-    &'a System,
-    &'a Timeline,
-    &'a BTreeMap<(i64, i64), i16>,
-    Option<&'a ExerciseWatch>,
-);
-
-/// Everything of a session that changes as it runs (what a checkpoint holds).
+/// Everything of a session that changes as it runs, as one value: what a session holds,
+/// what a history starts from and what a checkpoint keeps.
 #[derive(Debug)]
 pub(in crate::system) struct State {
     pub system: System,
+    /// The scenario's timed events.
     pub timeline: Timeline,
+    /// Cells edited since the load → their last value.
     pub edits: BTreeMap<(i64, i64), i16>,
     /// The exercise's watch as it was then (a seek back must not keep later verdicts).
     pub exercise: Option<ExerciseWatch>,
@@ -107,31 +101,17 @@ pub(in crate::system) struct State {
 pub const CHECKPOINT_SAMPLES: usize = 3_000;
 
 impl State {
-    /// A copy of the parts sharing nothing (its telemetry cut to [`CHECKPOINT_SAMPLES`]),
-    /// unless a sample injected into a port is still waiting.
-    pub fn copy_of(
-        system: &System,
-        timeline: &Timeline,
-        edits: &BTreeMap<(i64, i64), i16>,
-        exercise: Option<&ExerciseWatch>,
-    ) -> Option<Self> {
-        let mut system = system.try_clone()?;
+    /// A copy sharing nothing (its telemetry cut to [`CHECKPOINT_SAMPLES`]), unless a sample
+    /// injected into a port is still waiting.
+    fn try_clone(&self) -> Option<Self> {
+        let mut system = self.system.try_clone()?;
         system.trim_telemetry(CHECKPOINT_SAMPLES);
         Some(Self {
             system,
-            timeline: timeline.clone(),
-            edits: edits.clone(),
-            exercise: exercise.cloned(),
+            timeline: self.timeline.clone(),
+            edits: self.edits.clone(),
+            exercise: self.exercise.clone(),
         })
-    }
-
-    fn try_clone(&self) -> Option<Self> {
-        Self::copy_of(
-            &self.system,
-            &self.timeline,
-            &self.edits,
-            self.exercise.as_ref(),
-        )
     }
 }
 
@@ -185,14 +165,10 @@ pub(in crate::system) struct History {
 }
 
 impl History {
-    /// A history starting at `system`'s state (a set-up just built), with `inputs` to
-    /// replay up to `end_ns`.
-    pub fn new(
-        setup: Setup,
-        (system, timeline, edits, exercise): Parts<'_>,
-        inputs: Vec<TimedInput>,
-        end_ns: u64,
-    ) -> Self {
+    /// A history starting at `state` (a set-up just built), with `inputs` to replay up to
+    /// `end_ns`.
+    pub fn new(setup: Setup, state: &State, inputs: Vec<TimedInput>, end_ns: u64) -> Self {
+        let system = &state.system;
         let now = system.time_ns();
         let mut h = Self {
             setup,
@@ -208,7 +184,7 @@ impl History {
             mark_cursor: system.record().event_count(),
             end_ns,
         };
-        h.checkpoint(system, timeline, edits, exercise);
+        h.checkpoint(state);
         h
     }
 
@@ -256,18 +232,12 @@ impl History {
 
     /// Keeps a checkpoint of the session's state if it can be copied now; returns whether
     /// it could.
-    pub fn checkpoint(
-        &mut self,
-        system: &System,
-        timeline: &Timeline,
-        edits: &BTreeMap<(i64, i64), i16>,
-        exercise: Option<&ExerciseWatch>,
-    ) -> bool {
-        let Some(copy) = State::copy_of(system, timeline, edits, exercise) else {
+    pub fn checkpoint(&mut self, state: &State) -> bool {
+        let Some(copy) = state.try_clone() else {
             return false;
         };
         self.checkpoints.push(Checkpoint {
-            time_ns: system.time_ns(),
+            time_ns: state.system.time_ns(),
             next: self.next,
             state: copy,
         });

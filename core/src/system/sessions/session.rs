@@ -31,7 +31,7 @@ use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 
-use super::history::History;
+use super::history::{History, State};
 use crate::errors::SessionError;
 use crate::interfaces::Direction;
 use crate::map::{GridMap, MapUpdate};
@@ -197,22 +197,19 @@ struct Clock {
 /// The system as a person drives it (see the module documentation).
 #[derive(Debug)]
 pub struct Session {
-    system: System,
-    timeline: Timeline,
+    /// The system, its timeline, the map edits and the exercise's watch: everything that
+    /// changes as the session runs, put in place at once ([`Session::reset`]).
+    state: State,
     clock: Clock,
     source: Source,
     /// The parameters as loaded (a set-up records the differences).
     baseline: Parameters,
-    /// Cells edited since the load → their last value.
-    edits: BTreeMap<(i64, i64), i16>,
     /// The map's file name (the scenario's map file, or the file picked).
     map_name: String,
     /// Events handed out so far ([`Session::new_events`]).
     events_seen: u64,
     /// The run's history (a scenario's; `None` for a map file).
     history: Option<History>,
-    /// The scenario's exercise being watched, if it has one.
-    exercise: Option<ExerciseWatch>,
 }
 
 /// Every [`TUNABLE`] parameter's requested value, by component and name.
@@ -260,8 +257,12 @@ impl Session {
         let mut system = System::new(Rates::default())?;
         system.set_full_field(DRAWN.full_field);
         Ok(Self {
-            system,
-            timeline: Timeline::default(),
+            state: State {
+                system,
+                timeline: Timeline::default(),
+                edits: BTreeMap::new(),
+                exercise: None,
+            },
             clock: Clock {
                 speed: 1.0,
                 paused: false,
@@ -269,22 +270,20 @@ impl Session {
             },
             source: Source::Empty,
             baseline: BTreeMap::new(),
-            edits: BTreeMap::new(),
             map_name: String::new(),
             events_seen: 0,
             history: None,
-            exercise: None,
         })
     }
 
     /// The system.
     pub fn system(&self) -> &System {
-        &self.system
+        &self.state.system
     }
 
     /// What the robot is doing, in words.
     pub fn status(&self) -> Status {
-        self.system.status()
+        self.state.system.status()
     }
 
     /// The map's file name: the scenario's map file, or the file the user picked.
@@ -302,7 +301,7 @@ impl Session {
 
     /// The timeline of the scenario's timed events.
     pub fn timeline(&self) -> &Timeline {
-        &self.timeline
+        &self.state.timeline
     }
 
     // ------------------------------------------------------------------ loading
@@ -326,9 +325,10 @@ impl Session {
             MapSource::Json { path } | MapSource::Movingai { path, .. } => path.clone(),
             MapSource::Ros { yaml, .. } => yaml.clone(),
         };
-        self.timeline = Timeline::new(&scenario.events);
+        let timeline = Timeline::new(&scenario.events);
         self.install(
             system,
+            timeline,
             Source::Scenario {
                 scenario: Box::new(scenario),
                 files,
@@ -349,35 +349,36 @@ impl Session {
             system.apply(&Input::Activate { component })?;
         }
         self.map_name = name.to_owned();
-        self.timeline = Timeline::default();
-        self.install(system, Source::MapFile);
+        self.install(system, Timeline::default(), Source::MapFile);
         Ok(())
     }
 
-    fn install(&mut self, system: System, source: Source) {
+    fn install(&mut self, system: System, timeline: Timeline, source: Source) {
         self.baseline = parameters_of(&system);
-        self.exercise = match &source {
+        let exercise = match &source {
             Source::Scenario { scenario, .. } => watch(scenario, &system, &system),
             _ => None,
         };
-        self.system = system;
         self.source = source;
-        self.clock.pending_ns = 0;
-        self.edits.clear();
-        self.events_seen = 0;
-        self.history = self.scenario().map(Setup::of).map(|setup| {
-            History::new(
-                setup,
-                (
-                    &self.system,
-                    &self.timeline,
-                    &self.edits,
-                    self.exercise.as_ref(),
-                ),
-                Vec::new(),
-                0,
-            )
+        self.reset(State {
+            system,
+            timeline,
+            edits: BTreeMap::new(),
+            exercise,
         });
+        self.history = self
+            .scenario()
+            .map(Setup::of)
+            .map(|setup| History::new(setup, &self.state, Vec::new(), 0));
+    }
+
+    /// Puts `state` in place of the session's (a load, a restart, a seek back): the clock
+    /// owes no time and the event log is handed out again from the start. The one place the
+    /// session's state is replaced.
+    fn reset(&mut self, state: State) {
+        self.state = state;
+        self.clock.pending_ns = 0;
+        self.events_seen = 0;
     }
 
     // ------------------------------------------------------------------ set-up and sharing
@@ -394,7 +395,7 @@ impl Session {
             }
         };
         let mut params: BTreeMap<String, BTreeMap<String, f64>> = BTreeMap::new();
-        for ((kind, pname), value) in parameters_of(&self.system) {
+        for ((kind, pname), value) in parameters_of(&self.state.system) {
             let same = self
                 .baseline
                 .get(&(kind, pname.clone()))
@@ -406,14 +407,19 @@ impl Session {
                     .insert(pname, value);
             }
         }
-        let m = self.system.mission();
+        let m = self.state.system.mission();
         Ok(Setup {
             v: SETUP_VERSION,
             scenario: name,
             start: m.start().map(|p| [p.x, p.y, p.theta]),
             goal: m.goal().map(|p| [p.x, p.y, p.theta]),
             backward: m.direction() == Direction::Backward,
-            edits: self.edits.iter().map(|(&(x, y), &v)| (x, y, v)).collect(),
+            edits: self
+                .state
+                .edits
+                .iter()
+                .map(|(&(x, y), &v)| (x, y, v))
+                .collect(),
             params,
         })
     }
@@ -425,7 +431,7 @@ impl Session {
         let setup = self.setup()?;
         let json = serde_json::to_vec(&setup).map_err(|e| bad_token(e.to_string()))?;
         let token = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(&json, 9));
-        if !self.system.is_driving() {
+        if !self.state.system.is_driving() {
             self.restart_setup(&setup)?;
         }
         Ok(token)
@@ -495,23 +501,15 @@ impl Session {
             .and_then(|base| Ok((base, setup::build(scenario, files, setup, DRAWN)?)))?;
         let (base, system) = system;
         self.baseline = parameters_of(&base);
-        self.exercise = watch(scenario, &base, &system);
-        self.timeline = Timeline::new(&scenario.events);
-        self.system = system;
-        self.clock.pending_ns = 0;
-        self.events_seen = 0;
-        self.edits = setup.edits.iter().map(|&(x, y, v)| ((x, y), v)).collect();
-        self.history = Some(History::new(
-            setup.clone(),
-            (
-                &self.system,
-                &self.timeline,
-                &self.edits,
-                self.exercise.as_ref(),
-            ),
-            Vec::new(),
-            0,
-        ));
+        let exercise = watch(scenario, &base, &system);
+        let timeline = Timeline::new(&scenario.events);
+        self.reset(State {
+            system,
+            timeline,
+            edits: setup.edits.iter().map(|&(x, y, v)| ((x, y), v)).collect(),
+            exercise,
+        });
+        self.history = Some(History::new(setup.clone(), &self.state, Vec::new(), 0));
         Ok(())
     }
 
@@ -531,7 +529,7 @@ impl Session {
     /// [`Session::apply`]; a request carried out is recorded in the history if `record`
     /// (a person's), not when it is one replayed from it.
     fn carry_out(&mut self, input: &Input, record: bool) -> crate::Result<()> {
-        if let (Input::MapUpdate { cells }, Some(map)) = (input, self.system.map()) {
+        if let (Input::MapUpdate { cells }, Some(map)) = (input, self.state.system.map()) {
             let net = MapUpdate::net_changes(cells, map);
             if net.is_empty() {
                 return Ok(());
@@ -540,15 +538,15 @@ impl Session {
                 return self.carry_out(&Input::MapUpdate { cells: net }, record);
             }
         }
-        let t_ns = self.system.time_ns();
-        self.system.apply(input)?;
+        let t_ns = self.state.system.time_ns();
+        self.state.system.apply(input)?;
         if let (true, Some(h)) = (record, &mut self.history) {
             h.record(t_ns, input.clone());
         }
         let replans = match input {
             Input::MapUpdate { cells } => {
                 for &(x, y, v) in cells {
-                    self.edits.insert((x, y), v);
+                    self.state.edits.insert((x, y), v);
                 }
                 true
             }
@@ -558,9 +556,9 @@ impl Session {
         };
         let planners_active = ComponentKind::PLANNING
             .iter()
-            .all(|&k| self.system.component_state(k) == LifecycleState::Active);
-        if replans && planners_active && !self.system.is_driving() {
-            self.system.run_until_planned(PLAN_SECONDS)?;
+            .all(|&k| self.state.system.component_state(k) == LifecycleState::Active);
+        if replans && planners_active && !self.state.system.is_driving() {
+            self.state.system.run_until_planned(PLAN_SECONDS)?;
         }
         self.look();
         Ok(())
@@ -569,7 +567,7 @@ impl Session {
     /// `text` as a value of `component`'s parameter `name`, parsed by its declaration
     /// (spec §1): named, a number of its type.
     fn parse_param(&self, component: ComponentKind, name: &str, text: &str) -> crate::Result<f64> {
-        let config = self.system.wiring().config(component)?;
+        let config = self.state.system.wiring().config(component)?;
         let spec = config
             .specs()
             .iter()
@@ -597,7 +595,7 @@ impl Session {
 
     /// The events since the last call (those still kept), oldest first.
     pub fn new_events(&mut self) -> Vec<SystemEvent> {
-        let record = self.system.record();
+        let record = self.state.system.record();
         let events = record.events_since(self.events_seen).cloned().collect();
         self.events_seen = record.event_count();
         events
@@ -605,7 +603,7 @@ impl Session {
 
     /// Every parameter of the [`TUNABLE`] components, as the parameter panel lists them.
     pub fn parameters_view(&self) -> Vec<ComponentParameters> {
-        let wiring = self.system.wiring();
+        let wiring = self.state.system.wiring();
         let ec = wiring.execution_context();
         let mut out = Vec::new();
         for kind in TUNABLE {
@@ -648,7 +646,7 @@ impl Session {
     /// The warning shown beside parameter `name` of `kind` (see [`ParameterView::warning`]
     /// and [`ParameterWarning::of`], which an exercise's rule reads too).
     fn warning(&self, kind: ComponentKind, name: &str) -> Option<ParameterWarning> {
-        ParameterWarning::of(self.system.wiring(), kind, name)
+        ParameterWarning::of(self.state.system.wiring(), kind, name)
     }
 
     /// The last `seconds` (at most [`MAX_PLOT_SECONDS`]) of telemetry, one array per series.
@@ -658,7 +656,7 @@ impl Session {
         } else {
             0.0
         };
-        let s = &self.system;
+        let s = &self.state.system;
         let now = s.time_ns();
         let from = now.saturating_sub(libm::round(seconds * 1e9) as u64);
         let mut w = PlotWindow {

@@ -34,13 +34,18 @@ impl Session {
         let owed_max = libm::round(MAX_STEP_MS * self.clock.speed * 1e6) as u64;
         let owed = self.clock.pending_ns + libm::round(ms * self.clock.speed * 1e6) as u64;
         self.clock.pending_ns = owed.min(owed_max);
-        let base = self.system.wiring().execution_context().base_period_ns();
+        let base = self
+            .state
+            .system
+            .wiring()
+            .execution_context()
+            .base_period_ns();
         let mut ran = 0;
         while self.clock.pending_ns >= base && more() {
             // One tick (more if a replayed request plans past it), through the history.
-            let before = self.system.time_ns();
+            let before = self.state.system.time_ns();
             self.run_to(before.saturating_add(base));
-            let done = self.system.time_ns().saturating_sub(before).max(base);
+            let done = self.state.system.time_ns().saturating_sub(before).max(base);
             self.clock.pending_ns = self.clock.pending_ns.saturating_sub(done);
             ran += done / base;
         }
@@ -58,10 +63,15 @@ impl Session {
     /// (24 h of simulated time) are refused ([`SystemError::RunTooLong`](crate::errors::SystemError::RunTooLong)),
     /// and nothing runs.
     pub fn step_ticks(&mut self, ticks: u64) -> crate::Result<()> {
-        let base = self.system.wiring().execution_context().base_period_ns();
+        let base = self
+            .state
+            .system
+            .wiring()
+            .execution_context()
+            .base_period_ns();
         let asked = ticks.saturating_mul(base);
         crate::system::vocabulary::run_limit::check_run_length("step_ticks", asked as f64 * 1e-9)?;
-        let target = self.system.time_ns().saturating_add(asked);
+        let target = self.state.system.time_ns().saturating_add(asked);
         self.run_to(target);
         self.look();
         Ok(())
@@ -71,32 +81,32 @@ impl Session {
     /// replayed on the way plans past it): the scenario's timeline, the requests recorded
     /// for the times passed, checkpoints and marks ([`History`]).
     pub(super) fn run_to(&mut self, target_ns: u64) {
-        let base = self.system.wiring().execution_context().base_period_ns();
+        let base = self
+            .state
+            .system
+            .wiring()
+            .execution_context()
+            .base_period_ns();
         loop {
             // Each request due now, "now" read again after each: a request that plans runs
             // ticks, and the next one was recorded at the time that left.
             while let Some(input) = {
-                let now = self.system.time_ns();
+                let now = self.state.system.time_ns();
                 self.history.as_mut().and_then(|h| h.take_due(now))
             } {
                 if self.carry_out(&input, false).is_err() {
                     // Refused, nothing changed: refused again, and logged.
-                    self.system.apply_logged(
+                    self.state.system.apply_logged(
                         &input,
                         crate::system::vocabulary::input::RequestSource::Replay,
                     );
                 }
             }
-            let now = self.system.time_ns();
+            let now = self.state.system.time_ns();
             let mut stop = target_ns;
             if let Some(h) = &mut self.history {
                 if h.wants_checkpoint(now) {
-                    h.checkpoint(
-                        &self.system,
-                        &self.timeline,
-                        &self.edits,
-                        self.exercise.as_ref(),
-                    );
+                    h.checkpoint(&self.state);
                 }
                 stop = stop.min(h.next_stop(now));
             }
@@ -104,23 +114,23 @@ impl Session {
                 break;
             }
             let ticks = stop.saturating_sub(now).div_ceil(base).max(1);
-            self.timeline.run(&mut self.system, ticks);
+            self.state.timeline.run(&mut self.state.system, ticks);
             if let Some(h) = &mut self.history {
-                h.collect_marks(self.system.record(), self.system.time_ns());
+                h.collect_marks(self.state.system.record(), self.state.system.time_ns());
             }
         }
     }
 
     /// The exercise watch reads what happened (after time ran or a request was made).
     pub(super) fn look(&mut self) {
-        if let Some(w) = &mut self.exercise {
-            w.observe(&self.system);
+        if let Some(w) = &mut self.state.exercise {
+            w.observe(&self.state.system);
         }
     }
 
     /// The scenario's exercise as it stands, if it has one.
     pub fn exercise(&self) -> Option<ExerciseStatus> {
-        self.exercise.as_ref().map(ExerciseWatch::status)
+        self.state.exercise.as_ref().map(ExerciseWatch::status)
     }
 
     /// The scenario's exercise as the page shows it, with the clock's pause (what a frame

@@ -50,7 +50,10 @@ impl Session {
     /// a file.
     pub fn replay(&self) -> crate::Result<Replay> {
         let history = self.history.as_ref().ok_or_else(no_history)?;
-        Ok(history.replay(&self.system, self.content_hash().ok_or_else(no_history)?))
+        Ok(history.replay(
+            &self.state.system,
+            self.content_hash().ok_or_else(no_history)?,
+        ))
     }
 
     /// The content hash of the scenario loaded ([`Scenario::content_hash`](crate::system::Scenario::content_hash)),
@@ -98,18 +101,13 @@ impl Session {
         })?;
         self.history = Some(History::new(
             replay.setup.clone(),
-            (
-                &self.system,
-                &self.timeline,
-                &self.edits,
-                self.exercise.as_ref(),
-            ),
+            &self.state,
             replay.inputs.clone(),
             replay.end_ns,
         ));
         self.run_to(replay.end_ns);
         self.look();
-        let telemetry = self.system.record().telemetry();
+        let telemetry = self.state.system.record().telemetry();
         let hash = telemetry.trace_hash();
         let samples = telemetry.total();
         Ok(ReplayCheck {
@@ -132,21 +130,21 @@ impl Session {
         if let Some(reason) = beyond_replay_limit(&format!("seeking to {t_ns} ns"), t_ns) {
             return Err(bad(&reason));
         }
-        let base = self.system.wiring().execution_context().base_period_ns();
+        let base = self
+            .state
+            .system
+            .wiring()
+            .execution_context()
+            .base_period_ns();
         let target = t_ns.div_ceil(base).saturating_mul(base);
-        let now = self.system.time_ns();
+        let now = self.state.system.time_ns();
         let history = self.history.as_mut().ok_or_else(no_history)?;
         let nearer = history.checkpoint_before(target).is_some_and(|at| at > now);
         if target < now || nearer {
             let state = history
                 .restore(target)
                 .ok_or_else(|| bad("no checkpoint to go back to"))?;
-            self.system = state.system;
-            self.timeline = state.timeline;
-            self.edits = state.edits;
-            self.exercise = state.exercise;
-            self.events_seen = 0;
-            self.clock.pending_ns = 0;
+            self.reset(state);
         }
         self.run_to(target);
         self.look();
@@ -180,7 +178,7 @@ impl Session {
     /// The timeline's read-out: where the history starts and ends, now, the marks.
     pub fn timeline_view(&self) -> crate::Result<TimelineView> {
         let history = self.history.as_ref().ok_or_else(no_history)?;
-        Ok(history.view(self.system.time_ns()))
+        Ok(history.view(self.state.system.time_ns()))
     }
 
     /// The scenario run from the activation to its outcome twice, side by side: with the

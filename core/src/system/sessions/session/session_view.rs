@@ -23,32 +23,37 @@ use crate::system::vocabulary::kind::ComponentKind;
 impl Session {
     /// The map, if one is loaded (what a renderer draws over).
     pub fn map(&self) -> Option<&GridMap> {
-        self.system.map()
+        self.state.system.map()
     }
 
     /// The system's state: `Inactive`, `Active`, `Partial` or `Error`.
     pub fn state(&self) -> SystemState {
-        self.system.state()
+        self.state.system.state()
     }
 
     /// The lifecycle state of `component`.
     pub fn component_state(&self, component: ComponentKind) -> LifecycleState {
-        self.system.component_state(component)
+        self.state.system.component_state(component)
     }
 
     /// Whether the robot drives.
     pub fn is_driving(&self) -> bool {
-        self.system.is_driving()
+        self.state.system.is_driving()
     }
 
     /// Simulated time \[s\].
     pub fn time_s(&self) -> f64 {
-        self.system.time()
+        self.state.system.time()
     }
 
     /// One base tick \[s\].
     pub fn tick_s(&self) -> f64 {
-        self.system.wiring().execution_context().base_period_ns() as f64 * 1e-9
+        self.state
+            .system
+            .wiring()
+            .execution_context()
+            .base_period_ns() as f64
+            * 1e-9
     }
 
     /// The clock.
@@ -82,12 +87,12 @@ impl Session {
 
     /// Every component, in data-flow order.
     pub fn components(&self) -> Vec<ComponentView> {
-        let wiring = self.system.wiring();
+        let wiring = self.state.system.wiring();
         let ec = wiring.execution_context();
         ComponentKind::ALL
             .into_iter()
             .map(|kind| {
-                let info = self.system.component(kind);
+                let info = self.state.system.component(kind);
                 ComponentView {
                     name: kind.name(),
                     colour: info.state.editor_colour(),
@@ -100,7 +105,7 @@ impl Session {
 
     /// The telemetry readout and the status.
     pub fn telemetry(&self) -> TelemetryView {
-        let s = &self.system;
+        let s = &self.state.system;
         let pose = s.robot_pose();
         let stats = s.stats();
         let m = s.mission();
@@ -162,8 +167,8 @@ impl Session {
 
     /// Start, goal, paths and control points.
     pub fn plan(&self) -> PlanView {
-        let lpp = self.system.wiring().local_path_planning();
-        let m = self.system.mission();
+        let lpp = self.state.system.wiring().local_path_planning();
+        let m = self.state.system.mission();
         PlanView {
             start: m.start().map(PoseView::from),
             goal: m.goal().map(PoseView::from),
@@ -178,7 +183,7 @@ impl Session {
 
     /// The map's geometry, or `None` without a map.
     pub fn map_view(&self) -> Option<MapView> {
-        let m = self.system.map()?;
+        let m = self.state.system.map()?;
         Some(MapView {
             name: self.map_name.clone(),
             width: m.width(),
@@ -186,14 +191,14 @@ impl Session {
             grid_size: m.grid_size(),
             origin: m.origin(),
             obstacles: m.cells().iter().filter(|&&c| c != 0).count(),
-            key: self.system.wiring().map_key(),
+            key: self.state.system.wiring().map_key(),
         })
     }
 
     /// The map cell `(x, y)`: `Some(true)` an obstacle, `Some(false)` free, `None` outside
     /// the map (or no map).
     pub fn cell(&self, x: i64, y: i64) -> Option<bool> {
-        let m = self.system.map()?;
+        let m = self.state.system.map()?;
         let inside = x >= 0 && y >= 0 && (x as u64) < m.width() as u64;
         (inside && (y as u64) < m.height() as u64).then(|| m.is_obstacle(x, y))
     }
@@ -209,27 +214,27 @@ impl Session {
 
     /// The system's description (the System tab, `rtnav system`).
     pub fn graph(&self) -> SystemGraph {
-        self.system.wiring().graph()
+        self.state.system.wiring().graph()
     }
 
     /// The cell `(x, y)` explained (the inspector). A cell outside the map is an error.
     pub fn inspect_cell(&self, x: i64, y: i64) -> crate::Result<CellInspection> {
-        self.system.wiring().inspect_cell(x, y)
+        self.state.system.wiring().inspect_cell(x, y)
     }
 
     /// The whole configuration as one OpenRTM `.conf` text.
     pub fn conf_text(&self) -> String {
-        self.system.wiring().to_conf()
+        self.state.system.wiring().to_conf()
     }
 
     /// The telemetry history as CSV (header first).
     pub fn telemetry_csv(&self) -> String {
-        self.system.record().telemetry().to_csv()
+        self.state.system.record().telemetry().to_csv()
     }
 
     /// Where the robot has been `[x, y]` \[m\], oldest first.
     pub fn trail(&self) -> &[(f64, f64)] {
-        self.system.record().trail()
+        self.state.system.record().trail()
     }
 
     /// `MapUpdate` of the cells `(xs[i], ys[i])` to `value` (1 obstacle, 0 free): one
@@ -253,7 +258,7 @@ impl Session {
     /// The map cell under the world point `(x, y)` \[m\] (`None` outside the map or
     /// without one): the map's own world → cell.
     pub fn world_to_cell(&self, x: f64, y: f64) -> Option<(usize, usize)> {
-        self.system.map()?.world_to_cell(x, y)
+        self.state.system.map()?.world_to_cell(x, y)
     }
 
     /// The cells a square brush covers with its centre at the world point `(x, y)` \[m\]:
@@ -261,7 +266,7 @@ impl Session {
     /// across (`in_metres`), the cells whose centre lies inside the square (at least the
     /// cell under it). Only cells of the map; none without a map.
     pub fn brush_cells(&self, x: f64, y: f64, size: f64, in_metres: bool) -> Vec<(usize, usize)> {
-        let Some(map) = self.system.map() else {
+        let Some(map) = self.state.system.map() else {
             return Vec::new();
         };
         let Some((cx, cy)) = map.world_to_cell_signed(x, y) else {
@@ -310,7 +315,7 @@ impl Session {
     ) -> crate::Result<LifecycleState> {
         let component = ComponentKind::from_name(name)?;
         self.apply(&request(component))?;
-        Ok(self.system.component_state(component))
+        Ok(self.state.system.component_state(component))
     }
 
     /// A request on every component (`ActivateAll`, `DeactivateAll`, `ResetAll`, never
@@ -318,7 +323,7 @@ impl Session {
     pub fn all(&mut self, input: &Input) -> SystemState {
         // Requests on all components are never refused; a refusal would be logged.
         let _ = self.apply(input);
-        self.system.state()
+        self.state.system.state()
     }
 
     /// Makes the next execution of the component named `name` fail, for `reason`.
