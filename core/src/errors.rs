@@ -1,7 +1,7 @@
 //! The crate's error type: [`Error`] gathers one `thiserror` enum per area, each defined next
 //! to the code it describes (`rtc/error.rs`, `map/error.rs`, `global/error.rs`,
-//! `local/error.rs`, `motion/error.rs`, `render/error.rs`, `system/error.rs`) and re-exported
-//! here.
+//! `local/error.rs`, `motion/error.rs`, `render/error.rs`, `system/vocabulary/error.rs`) and
+//! re-exported here.
 //!
 //! Every variant names the problem with named fields, so a GUI can show it and a test can
 //! match it. Library code returns these; it does not panic on bad input. Each area's enum

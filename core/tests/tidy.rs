@@ -21,10 +21,13 @@ fn src() -> PathBuf {
 
 #[test]
 fn the_file_that_holds_system_is_short_and_no_source_file_is_over_800_lines() {
-    let system = std::fs::read_to_string(src().join("system/robot.rs")).unwrap();
+    let system = std::fs::read_to_string(src().join("system/simulation/robot.rs")).unwrap();
     assert!(system.contains("pub struct System {"));
     let n = system.lines().count();
-    assert!(n <= 400, "system/robot.rs has {n} lines (at most 400)");
+    assert!(
+        n <= 400,
+        "system/simulation/robot.rs: {n} lines (at most 400)"
+    );
     let mut files = Vec::new();
     rust_files(&src(), &mut files);
     let long: Vec<String> = files
@@ -108,9 +111,10 @@ fn cycles_in(dir: &str) -> Vec<Vec<String>> {
 }
 
 #[test]
-fn no_two_files_of_system_or_render_import_each_other_in_a_circle() {
-    for dir in ["system", "render"] {
-        let cycles = cycles_in(dir);
+fn no_two_files_of_a_layer_of_system_or_of_render_import_each_other_in_a_circle() {
+    let layers = SYSTEM_LAYERS.iter().map(|layer| format!("system/{layer}"));
+    for dir in layers.chain(["render".to_owned()]) {
+        let cycles = cycles_in(&dir);
         assert!(cycles.is_empty(), "{dir}/: import circles {cycles:?}");
     }
 }
@@ -196,6 +200,149 @@ fn the_wasm_layer_reaches_nothing_past_the_session_and_the_screen() {
     assert_eq!(
         past_the_boundary("fn f() -> SystemGraph {}\n// System"),
         Vec::<&str>::new()
+    );
+}
+
+/// The layers of `system/`, bottom first: a module may use its own layer and the layers
+/// before it, never one after it (`system/mod.rs`, "Layers").
+const SYSTEM_LAYERS: [&str; 4] = ["vocabulary", "simulation", "runs", "sessions"];
+
+#[test]
+fn system_holds_only_mod_rs_at_its_top_and_a_folder_for_each_layer() {
+    let mut files = Vec::new();
+    let mut folders = Vec::new();
+    for entry in std::fs::read_dir(src().join("system")).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if path.is_dir() {
+            folders.push(name);
+        } else {
+            files.push(name);
+        }
+    }
+    folders.sort();
+    assert_eq!(
+        files,
+        ["mod.rs"],
+        "system/ holds only mod.rs; the rest in its layers"
+    );
+    let mut layers = SYSTEM_LAYERS.to_vec();
+    layers.sort();
+    assert_eq!(
+        folders, layers,
+        "every folder of system/ is a layer of SYSTEM_LAYERS"
+    );
+    for layer in SYSTEM_LAYERS {
+        let mod_rs = src().join("system").join(layer).join("mod.rs");
+        let text = std::fs::read_to_string(&mod_rs).unwrap();
+        assert!(
+            text.starts_with("//!"),
+            "{layer}/mod.rs opens with what the layer is"
+        );
+    }
+}
+
+/// What `code` names by the paths that can reach another layer, each with its path's
+/// start: `crate::system::NAME` (a group `crate::system::{a::X, b}` names each item's first
+/// part) and `super::NAME`, however many `super::` before it. Comments are left out; tests
+/// are not.
+fn system_paths(code: &str) -> Vec<(&'static str, String)> {
+    let code: String = code
+        .lines()
+        .map(|l| l.find("//").map_or(l, |i| &l[..i]))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let ident = |s: &str| -> String {
+        s.chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect()
+    };
+    let mut names = Vec::new();
+    for (i, _) in code.match_indices("crate::system::") {
+        let rest = code[i + "crate::system::".len()..].trim_start();
+        if let Some(group) = rest.strip_prefix('{') {
+            // The group's items at its own depth, each item's first part.
+            let (mut depth, mut start) = (0, 0);
+            for (j, c) in group.char_indices() {
+                match c {
+                    '{' => depth += 1,
+                    '}' if depth == 0 => {
+                        names.push(("crate::system", ident(group[start..j].trim_start())));
+                        break;
+                    }
+                    '}' => depth -= 1,
+                    ',' if depth == 0 => {
+                        names.push(("crate::system", ident(group[start..j].trim_start())));
+                        start = j + 1;
+                    }
+                    _ => {}
+                }
+            }
+        } else {
+            names.push(("crate::system", ident(rest)));
+        }
+    }
+    for (i, _) in code.match_indices("super::") {
+        let before = code[..i].chars().next_back();
+        if before.is_some_and(|c| c == ':' || c.is_alphanumeric() || c == '_') {
+            continue; // the second `super` of `super::super::`: counted from the first
+        }
+        let mut rest = &code[i..];
+        while let Some(r) = rest.strip_prefix("super::") {
+            rest = r;
+        }
+        names.push(("super", ident(rest)));
+    }
+    names.retain(|(_, n)| !n.is_empty());
+    names
+}
+
+#[test]
+fn no_module_of_system_imports_a_layer_above_its_own() {
+    let mut problems = Vec::new();
+    for (rank, layer) in SYSTEM_LAYERS.iter().enumerate() {
+        let mut files = Vec::new();
+        rust_files(&src().join("system").join(layer), &mut files);
+        for file in files {
+            let code = std::fs::read_to_string(&file).unwrap();
+            let name = file.strip_prefix(src()).unwrap().display().to_string();
+            for (start, used) in system_paths(&code) {
+                match SYSTEM_LAYERS.iter().position(|l| *l == used) {
+                    Some(above) if above > rank => {
+                        problems.push(format!("{name} ({layer}) uses {start}::{used}"));
+                    }
+                    // A public re-export (`crate::system::Session`) would hide the layer.
+                    None if start == "crate::system" => {
+                        problems.push(format!("{name} names {start}::{used}, not by its layer"));
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "imports against the layers: {problems:#?}"
+    );
+    // The check can fail: each way of naming another layer is found.
+    let reach = "use crate::system::sessions::session::Session;\n\
+                 use crate::system::{runs::setup, vocabulary::kind::ComponentKind};\n\
+                 fn f() -> super::super::simulation::robot::System {}\n\
+                 // crate::system::commented\n\
+                 use super::wiring::Wiring;";
+    let named: Vec<String> = system_paths(reach)
+        .into_iter()
+        .map(|(start, name)| format!("{start}::{name}"))
+        .collect();
+    assert_eq!(
+        named,
+        [
+            "crate::system::sessions",
+            "crate::system::runs",
+            "crate::system::vocabulary",
+            "super::simulation",
+            "super::wiring"
+        ]
     );
 }
 

@@ -2,22 +2,21 @@
 //! spec §6 rates, taking [`Input`]s; scenarios, their timeline and the one set-up builder;
 //! the page's session.
 //!
-//! # Parts
+//! # Layers
 //!
-//! | part | holds | may not know |
-//! | --- | --- | --- |
-//! | [`Wiring`] (`wiring.rs`) | the execution context, the components, their connections, the service calls between ticks; each tick returns a [`Report`] of facts | the mission, the record, any user interface |
-//! | [`Mission`] (`mission.rs`) | start, goal, direction, route, epochs, halt, and the arrival — decided there alone (`rest.rs`: rest, motion, tolerances) | the record; it never calls a component |
-//! | [`Record`] (`record.rs`) | the event log, totals, trail, clearance, telemetry and trace hash — written from the reports | it never changes anything it observes |
-//! | [`System`] (`robot.rs`) | the three composed: [`System::apply`] (the one interpreter of [`Input`]), [`System::step`], [`System::run_until`] | clocks, scripts, previews, drawing buffers |
-//! | [`SystemGraph`] (`graph.rs`, from `links.rs`) | the system's description: components, ports, connections, last samples and calls | — |
-//! | [`Timeline`] (`timeline.rs`) | a scenario's timed events, counted from the drive's start | — |
-//! | [`setup::build`] (`setup.rs`) | the one set-up builder (runner, renderer, page, tests) | — |
-//! | [`ScenarioRun`] (`runner.rs`) | a headless run to its outcome | — |
-//! | [`Comparison`] (`compare.rs`) | one scenario run with two set-ups, side by side | — |
-//! | [`Session`] (`session.rs`, `session_replay.rs`) | the user interface's one boundary: clock, set-up record, share links, read-outs, replays and seeking | — |
-//! | [`Replay`] (`replay.rs`) | a recorded run as a versioned JSON file: set-up and timed [`Input`]s, exact numbers | — |
-//! | `History` (`history.rs`) | a session's recorded inputs, checkpoints and timeline marks | — |
+//! Each file of `system/` lives in the folder of its layer; a layer uses only itself and the
+//! layers below it (`core/tests/tidy.rs` checks every import). From the bottom up:
+//!
+//! | layer | holds | may use | used by |
+//! | --- | --- | --- | --- |
+//! | `vocabulary/` | [`ComponentKind`], [`Rates`], [`Input`] (every request as one value), [`EventKind`] and [`SystemEvent`] (the facts), the errors, the JSON reader (`json_text.rs`), [`MAX_REPLAY_NS`] (`run_limit.rs`) | — | all above |
+//! | `simulation/` | [`Wiring`] (`wiring.rs`: the execution context, the components, the service calls between ticks; each tick returns a [`Report`] of facts; `wiring/connections.rs`: every data connection as made, every service port with its calls, InventGUI's ports, cut and restore), [`Mission`] (start, goal, route, halt, and the arrival, decided there alone; `rest.rs`: rest, motion, tolerances), [`Record`] (log, totals, trail, clearance, telemetry and trace hash — written from the reports), [`System`] (`robot.rs`: the three composed; [`System::apply`], the one interpreter of [`Input`]), and the robot's views: [`Status`], [`ComponentActivity`], [`ParameterWarning`], [`SystemGraph`], [`CellInspection`], the `.conf` bundle | vocabulary | runs, sessions, the renderer |
+//! | `runs/` | [`Scenario`] (and its content hash), [`setup::build`] (the one set-up builder), [`Timeline`] (a scenario's timed events from the drive's start), [`ScenarioRun`] (a headless run to its outcome), [`Comparison`] (one scenario, two set-ups), [`Exercise`] with its checks, [`ExerciseWatch`], [`ExerciseRun`] | simulation, vocabulary | sessions |
+//! | `sessions/` | [`Session`] (`session.rs` and its children `session/`: the user interface's one boundary — clock, set-up record, share links, read-outs, replays and seeking), `History` (recorded inputs, checkpoints, timeline marks), [`Replay`] (a recorded run as a versioned JSON file), the view types ([`FrameView`], …), [`PickedFiles`], [`Refusal`] | runs, simulation, vocabulary | the wasm layer, the screen |
+//!
+//! Who may not know what: the wiring knows nothing of the mission, the record or any user
+//! interface; the mission never calls a component; the record never changes what it
+//! observes; [`System`] holds no clock, script, preview or drawing buffer.
 //!
 //! # Wiring (spec §0)
 //!
@@ -67,93 +66,57 @@
 //! goes to Error (the robot stands still), MotorControl gets `Stop`; `Input::ResetAll`
 //! brings every component back to Inactive.
 
-mod activity;
-mod compare;
-mod conf_bundle;
-mod content_hash;
-mod error;
-mod events;
-mod exercise;
-mod exercise_run;
-mod exercise_watch;
-mod graph;
-mod history;
-mod input;
-mod inspect;
-mod json_text;
-mod kind;
-mod links;
-mod mission;
-mod parameter_warning;
-mod picked_files;
-mod rates;
-mod record;
-mod refusal;
-mod replay;
-mod rest;
-mod robot;
-mod run_limit;
-mod runner;
-mod scenario;
-mod session;
-pub mod setup;
-mod status;
-mod telemetry;
-mod timeline;
-mod views;
-mod wiring;
+mod runs;
+mod sessions;
+mod simulation;
+mod vocabulary;
 
-pub use activity::{ComponentActivity, Held, ZeroOutput};
-pub use compare::{ComparePlots, CompareTable, Comparison, RunSummary, compare, setup_with};
-pub use conf_bundle::CONF_BUNDLE_HEADER;
-pub use error::{ConfBundleError, MAP_FILES_EXPECTED, ScenarioError, SessionError, SystemError};
-pub use events::{EventKind, SystemEvent};
-pub use exercise::{
-    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Unit, Verdict,
-    parameter_values,
+pub use runs::compare::{ComparePlots, CompareTable, Comparison, RunSummary, compare, setup_with};
+pub use runs::exercise::{Check, CheckState, CheckStatus, Exercise, ExerciseStatus, Unit, Verdict};
+pub use runs::exercise_run::{DriveInput, ExerciseRun, check_exercise};
+pub use runs::exercise_watch::ExerciseWatch;
+pub use runs::runner::{
+    EndReason, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario,
 };
-pub use exercise_run::{DriveInput, ExerciseRun, check_exercise};
-pub use exercise_watch::ExerciseWatch;
-pub use graph::{
-    ConnectionKind, Endpoint, GraphComponent, GraphConnection, GraphPort, PortKind, SystemGraph,
-};
-pub use history::{
-    CHECKPOINT_CELLS, CHECKPOINT_NS, CHECKPOINT_SAMPLES, MAX_CHECKPOINTS, Mark, MarkKind,
-    TimelineView,
-};
-pub use input::{Input, InputSummary, RequestSource};
-pub use inspect::{CellInspection, FieldInspection, ParentInspection};
-pub use kind::ComponentKind;
-pub use links::Peer;
-pub use mission::Mission;
-pub use parameter_warning::ParameterWarning;
-pub use picked_files::{PickError, PickedFiles};
-pub use rates::Rates;
-pub use record::{EVENT_CAPACITY, PLAN_TIMES_CAPACITY, Record, RunStats, TRAIL_CAPACITY};
-pub use refusal::Refusal;
-pub use replay::{MAX_REPLAY_BYTES, REPLAY_FORMAT, REPLAY_VERSION, Replay, TimedInput};
-pub use rest::{
-    ARRIVAL_HEADING_DEG, Measured, Motion, Offset, REST_SPEED, REST_TURN_RATE, Tolerances,
-};
-pub use robot::System;
-pub use run_limit::MAX_REPLAY_NS;
-pub use runner::{EndReason, Outcome, STILL_NS, ScenarioReport, ScenarioRun, judge, run_scenario};
 #[cfg(not(target_arch = "wasm32"))]
-pub use scenario::DirResolver;
-pub use scenario::{
+pub use runs::scenario::DirResolver;
+pub use runs::scenario::{
     BoxSpec, DirectionSpec, Expectation, FileResolver, MapSource, MemoryResolver, OutcomeKind,
     PoseSpec, Scenario, ScenarioEvent, UnknownSpec,
 };
-pub use session::{
+pub use runs::setup::{self, BuildOptions, Setup};
+pub use runs::timeline::Timeline;
+pub use sessions::history::{MAX_CHECKPOINTS, Mark, MarkKind, TimelineView};
+pub use sessions::picked_files::{PickError, PickedFiles};
+pub use sessions::refusal::Refusal;
+pub use sessions::replay::{Replay, TimedInput};
+pub use sessions::session::{
     ComponentParameters, MAX_PLOT_SECONDS, MAX_SPEED, MAX_STEP_MS, MIN_SPEED, ParameterView,
     PlotWindow, ReplayCheck, Session, TOKEN_INFLATE_LIMIT, TUNABLE,
 };
-pub use setup::{BuildOptions, PLAN_SECONDS, Setup};
-pub use status::{ComponentInfo, Status, SystemState};
-pub use telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
-pub use timeline::Timeline;
-pub use views::{
+pub use sessions::views::{
     ClockView, ComponentView, DirectionView, EventLevel, EventView, ExerciseView, FrameView,
     MapView, PlanView, PoseView, ScenarioView, TelemetryView,
 };
-pub use wiring::{Report, Wiring};
+pub use simulation::activity::{ComponentActivity, Held, ZeroOutput};
+pub use simulation::conf_bundle::CONF_BUNDLE_HEADER;
+pub use simulation::graph::{
+    ConnectionKind, Endpoint, GraphComponent, GraphConnection, GraphPort, PortKind, SystemGraph,
+};
+pub use simulation::inspect::{CellInspection, FieldInspection, ParentInspection};
+pub use simulation::mission::Mission;
+pub use simulation::parameter_warning::ParameterWarning;
+pub use simulation::record::{EVENT_CAPACITY, Record, RunStats};
+pub use simulation::rest::{
+    ARRIVAL_HEADING_DEG, Measured, Motion, Offset, REST_SPEED, REST_TURN_RATE, Tolerances,
+};
+pub use simulation::robot::System;
+pub use simulation::status::{ComponentInfo, Status, SystemState};
+pub use simulation::telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
+pub use simulation::wiring::{Report, Wiring};
+pub use vocabulary::error::{ConfBundleError, ScenarioError, SessionError, SystemError};
+pub use vocabulary::events::{EventKind, SystemEvent};
+pub use vocabulary::input::{Input, InputSummary, RequestSource};
+pub use vocabulary::kind::ComponentKind;
+pub use vocabulary::rates::Rates;
+pub use vocabulary::run_limit::MAX_REPLAY_NS;
