@@ -41,23 +41,23 @@ use super::cost::OctileCost;
 use super::heap::{RadixHeap, RadixKey};
 use crate::errors::GlobalPlanningError;
 use crate::interfaces::GlobalPathCourse;
-use crate::map::{Cell, GridMap, MapStamp};
+use crate::map::{Cell, GridMap, MapStamp, ORTHOGONAL_FIRST};
 
 mod jump;
 use jump::BitLines;
 
-/// The eight moves `(dx, dy)`: east, north, west, south, then the diagonals NE, NW, SW, SE.
-/// Diagonal `4 + k` lies between orthogonals `k` and `(k + 1) % 4`.
-const MOVES: [(i8, i8); 8] = [
-    (1, 0),
-    (0, 1),
-    (-1, 0),
-    (0, -1),
-    (1, 1),
-    (-1, 1),
-    (-1, -1),
-    (1, -1),
-];
+/// The eight moves `(dx, dy)` of [`ORTHOGONAL_FIRST`] (east, north, west, south, then the
+/// diagonals NE, NW, SW, SE; diagonal `4 + k` lies between orthogonals `k` and `(k + 1) % 4`),
+/// as bytes: a move's index is what a cell byte keeps.
+const MOVES: [(i8, i8); 8] = {
+    let mut moves = [(0, 0); 8];
+    let mut k = 0;
+    while k < 8 {
+        moves[k] = (ORTHOGONAL_FIRST[k].0 as i8, ORTHOGONAL_FIRST[k].1 as i8);
+        k += 1;
+    }
+    moves
+};
 
 /// A plan: the cells from start to goal and their cost.
 #[derive(Debug, Clone, PartialEq)]
@@ -441,6 +441,30 @@ impl AStar {
     }
 }
 
+/// What both searches (cell by cell and over jump points) work with: the tag of this
+/// generation's reached cells, the moves as index offsets, the step costs as keys and the
+/// octile heuristic towards the goal.
+#[derive(Clone, Copy)]
+struct Costs<K> {
+    tag: u8,
+    offsets: [isize; 8],
+    straight: K,
+    diagonal: K,
+    /// `diagonal − straight`.
+    extra: K,
+    goal: (u32, u32),
+}
+
+impl<K: Key> Costs<K> {
+    /// h of a cell: (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
+    /// min·(key(√2) − key(1)) (keys are linear and exact).
+    #[inline(always)]
+    fn heuristic(&self, x: u32, y: u32) -> K {
+        let (dx, dy) = (x.abs_diff(self.goal.0), y.abs_diff(self.goal.1));
+        K::times(self.straight, dx.max(dy)) + K::times(self.extra, dx.min(dy))
+    }
+}
+
 /// One search over the cell bytes.
 struct Search<'a> {
     cells: &'a mut [u8],
@@ -451,6 +475,36 @@ struct Search<'a> {
 }
 
 impl Search<'_> {
+    /// Starts a search from padded index `s` (cell `start`): `scratch.g` covers the cells,
+    /// `s` is reached at cost 0 and is alone in the open list. Returns the search's costs.
+    fn begin<K: Key>(
+        &mut self,
+        s: usize,
+        start: Cell,
+        scratch: &mut Scratch<K>,
+    ) -> Option<Costs<K>> {
+        let n = self.cells.len();
+        if scratch.g.len() < n {
+            scratch.g.resize(n, K::default());
+        }
+        let stride = self.stride as isize;
+        let (straight, diagonal) = (K::of(OctileCost::STRAIGHT), K::of(OctileCost::DIAGONAL));
+        let costs = Costs {
+            tag: PASSABLE | (self.generation << GENERATION_SHIFT),
+            offsets: MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride),
+            straight,
+            diagonal,
+            extra: diagonal - straight,
+            goal: (self.goal.0 as u32, self.goal.1 as u32),
+        };
+        self.cells[s] = costs.tag;
+        scratch.g[s] = K::default();
+        scratch.open.clear();
+        let h = costs.heuristic(start.0 as u32, start.1 as u32);
+        scratch.open.push(h, s as u32).ok()?;
+        Some(costs)
+    }
+
     /// Runs A* from padded index `s` to `t`; returns the number of expanded cells if the
     /// goal was reached (its parent moves are then in the cell bytes).
     fn run<K: Key>(
@@ -460,32 +514,19 @@ impl Search<'_> {
         start: Cell,
         scratch: &mut Scratch<K>,
     ) -> Option<usize> {
+        let costs = self.begin(s, start, scratch)?;
+        let Costs {
+            tag,
+            offsets,
+            straight,
+            diagonal,
+            ..
+        } = costs;
+        let heuristic = |x: u32, y: u32| costs.heuristic(x, y);
+        let stride = self.stride;
         let cells = &mut *self.cells;
-        if scratch.g.len() < cells.len() {
-            scratch.g.resize(cells.len(), K::default());
-        }
         let g = &mut scratch.g[..cells.len()];
         let open = &mut scratch.open;
-        open.clear();
-        let generation = self.generation;
-        let tag = PASSABLE | (generation << GENERATION_SHIFT);
-        let stride = self.stride;
-        let offsets: [isize; 8] =
-            MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride as isize);
-        let straight = K::of(OctileCost::STRAIGHT);
-        let diagonal = K::of(OctileCost::DIAGONAL);
-        let (gx, gy) = (self.goal.0 as u32, self.goal.1 as u32);
-        // h of a cell: (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
-        // min·(key(√2) − key(1)) (keys are linear and exact).
-        let (unit, extra) = (straight, diagonal - straight);
-        let heuristic = |x: u32, y: u32| {
-            let (dx, dy) = (x.abs_diff(gx), y.abs_diff(gy));
-            K::times(unit, dx.max(dy)) + K::times(extra, dx.min(dy))
-        };
-        cells[s] = tag;
-        g[s] = K::default();
-        let h = heuristic(start.0 as u32, start.1 as u32);
-        open.push(h, s as u32).ok()?;
         let mut expanded = 0usize;
         while let Some((f, node)) = open.pop() {
             let p = node as usize;
