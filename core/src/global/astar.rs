@@ -443,25 +443,30 @@ impl AStar {
 
 /// What both searches (cell by cell and over jump points) work with: the tag of this
 /// generation's reached cells, the moves as index offsets, the step costs as keys and the
-/// octile heuristic towards the goal.
-#[derive(Clone, Copy)]
+/// heuristic.
 struct Costs<K> {
     tag: u8,
     offsets: [isize; 8],
     straight: K,
     diagonal: K,
-    /// `diagonal − straight`.
+    heuristic: Octile<K>,
+}
+
+/// The octile distance to the goal as a key: (max − min) + min·√2 = max·1 + min·(√2 − 1),
+/// so max·key(1) + min·(key(√2) − key(1)) (keys are linear and exact).
+#[derive(Clone, Copy)]
+struct Octile<K> {
+    unit: K,
+    /// key(√2) − key(1).
     extra: K,
     goal: (u32, u32),
 }
 
-impl<K: Key> Costs<K> {
-    /// h of a cell: (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
-    /// min·(key(√2) − key(1)) (keys are linear and exact).
+impl<K: Key> Octile<K> {
     #[inline(always)]
-    fn heuristic(&self, x: u32, y: u32) -> K {
+    fn at(self, x: u32, y: u32) -> K {
         let (dx, dy) = (x.abs_diff(self.goal.0), y.abs_diff(self.goal.1));
-        K::times(self.straight, dx.max(dy)) + K::times(self.extra, dx.min(dy))
+        K::times(self.unit, dx.max(dy)) + K::times(self.extra, dx.min(dy))
     }
 }
 
@@ -477,6 +482,7 @@ struct Search<'a> {
 impl Search<'_> {
     /// Starts a search from padded index `s` (cell `start`): `scratch.g` covers the cells,
     /// `s` is reached at cost 0 and is alone in the open list. Returns the search's costs.
+    #[inline(always)]
     fn begin<K: Key>(
         &mut self,
         s: usize,
@@ -494,13 +500,16 @@ impl Search<'_> {
             offsets: MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride),
             straight,
             diagonal,
-            extra: diagonal - straight,
-            goal: (self.goal.0 as u32, self.goal.1 as u32),
+            heuristic: Octile {
+                unit: straight,
+                extra: diagonal - straight,
+                goal: (self.goal.0 as u32, self.goal.1 as u32),
+            },
         };
         self.cells[s] = costs.tag;
         scratch.g[s] = K::default();
         scratch.open.clear();
-        let h = costs.heuristic(start.0 as u32, start.1 as u32);
+        let h = costs.heuristic.at(start.0 as u32, start.1 as u32);
         scratch.open.push(h, s as u32).ok()?;
         Some(costs)
     }
@@ -514,15 +523,13 @@ impl Search<'_> {
         start: Cell,
         scratch: &mut Scratch<K>,
     ) -> Option<usize> {
-        let costs = self.begin(s, start, scratch)?;
         let Costs {
             tag,
             offsets,
             straight,
             diagonal,
-            ..
-        } = costs;
-        let heuristic = |x: u32, y: u32| costs.heuristic(x, y);
+            heuristic,
+        } = self.begin(s, start, scratch)?;
         let stride = self.stride;
         let cells = &mut *self.cells;
         let g = &mut scratch.g[..cells.len()];
@@ -541,7 +548,7 @@ impl Search<'_> {
             // Padded coordinates: (x + 1, y + 1); 32-bit division (a map has < 2^24 cells).
             let (px, py) = (p as u32 % stride as u32, p as u32 / stride as u32);
             // g from the queue's f (keys are exact and linear): no read of g[p].
-            let gp = f - heuristic(px - 1, py - 1);
+            let gp = f - heuristic.at(px - 1, py - 1);
             // Bit k set: orthogonal move k leads to a passable cell.
             let orth = (cells[p + 1] >> 7)
                 | (cells[p + stride] >> 7) << 1
@@ -574,7 +581,7 @@ impl Search<'_> {
                 let mx = (px as i32 + i32::from(dx)) as u32 - 1;
                 let my = (py as i32 + i32::from(dy)) as u32 - 1;
                 // Never fails: f never decreases (consistent heuristic, exact keys).
-                open.push(ng + heuristic(mx, my), m as u32).ok()?;
+                open.push(ng + heuristic.at(mx, my), m as u32).ok()?;
             }
         }
         None

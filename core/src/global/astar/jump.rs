@@ -194,15 +194,13 @@ impl Search<'_> {
         if scratch.parent.len() < n {
             scratch.parent.resize(n, 0);
         }
-        let costs = self.begin(s, start, scratch)?;
         let Costs {
             tag,
             offsets,
             straight,
             diagonal,
-            ..
-        } = costs;
-        let heuristic = |x: u32, y: u32| costs.heuristic(x, y);
+            heuristic,
+        } = self.begin(s, start, scratch)?;
         let stride = self.stride;
         let Scratch { g, parent, open } = scratch;
         parent[s] = s as u32;
@@ -218,7 +216,7 @@ impl Search<'_> {
                 return Some(expanded);
             }
             let (px, py) = (p as u32 % stride as u32, p as u32 / stride as u32);
-            let gp = f - heuristic(px - 1, py - 1);
+            let gp = f - heuristic.at(px - 1, py - 1);
             let pass = |o: isize| self.cells[p.wrapping_add_signed(o)] >> 7;
             // Bit k: orthogonal move k leads to a passable cell.
             let orth = pass(offsets[0])
@@ -279,7 +277,7 @@ impl Search<'_> {
                 parent[m] = p as u32;
                 let (mx, my) = (m as u32 % stride as u32 - 1, m as u32 / stride as u32 - 1);
                 // Never fails: f never decreases (consistent heuristic, exact keys).
-                open.push(ng + heuristic(mx, my), m as u32).ok()?;
+                open.push(ng + heuristic.at(mx, my), m as u32).ok()?;
             }
         }
         None
