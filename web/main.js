@@ -3,7 +3,7 @@
 // its renderer, in Rust memory), mounts the stage and the panels, loads the default
 // scenario, runs the clock. No simulation logic lives here: the page owns the clock
 // (requestAnimationFrame), the DOM and the mouse; Rust owns every state (spec §1, §6).
-import init, { Demo } from './pkg/rtnav_wasm.js';
+import init, { Demo, version } from './pkg/rtnav_wasm.js';
 import { createCrashGuard } from './js/crash.js';
 import { startLoop } from './js/loop.js';
 import { createNotice } from './js/notice.js';
@@ -49,6 +49,8 @@ async function boot() {
   translateStatic();
   // The module index.html began to download and compile as the page opened (else: fetched now).
   const wasm = await init({ module_or_path: (await window.rtnavWasm) ?? undefined });
+  // The core's package version, beside the title (replays record the same one).
+  $('version').textContent = version();
   const guard = createCrashGuard($('crash'), $('crash-message'));
   const demo = guard.call(() => new Demo(640, 400));
   if (!demo) return;

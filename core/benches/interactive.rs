@@ -1,4 +1,4 @@
-//! Issue 14's rows (`docs/performance.md`): interactive planning on a map the size of
+//! The large-map rows (`docs/performance.md`): interactive planning on a map the size of
 //! Nav2's warehouse (1006 × 1674 cells of 0.03 m, generated: `support/warehouse.rs`), each
 //! with its baseline measured in the same run:
 //!

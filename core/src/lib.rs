@@ -45,3 +45,8 @@ pub use reason::Reason;
 /// cargo test -p rtnav --test replay_fixtures`) — and say in `CHANGELOG.md` why the new
 /// traces are right.
 pub const BEHAVIOUR_VERSION: u32 = 2;
+
+/// The core's package version (the workspace's in `Cargo.toml`): what the page shows, and what
+/// a replay records of the build that wrote it. Whether a run is reproduced is
+/// [`BEHAVIOUR_VERSION`]'s question, not this one's.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -8,7 +8,8 @@
 use proptest::prelude::*;
 use rtnav::interfaces::Direction;
 use rtnav::local::reference::{self, ReferenceField};
-use rtnav::local::{CellState, FieldExtent, FieldRequest, NEIGHBOURS, PotentialField, descend};
+use rtnav::local::{CellState, FieldExtent, FieldRequest, PotentialField, descend};
+use rtnav::map::NEIGHBOURS;
 use rtnav::map::{Cell, GridMap, MapUpdate};
 use rtnav::rtc::Time;
 

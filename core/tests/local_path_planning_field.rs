@@ -6,11 +6,11 @@ use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 use rtnav::errors::LocalPathError;
 use rtnav::interfaces::{Direction, Pose};
 use rtnav::local::{
-    CellState, FieldExtent, FieldRequest, LocalPlanner, NEIGHBOURS, PlanParams, PlanRequest,
-    PotentialField, TARGET_POTENTIAL, control_points, corner_cells, descend, find_local_target,
-    merge_paths, nearest_path_index, step_length, thin_collinear,
+    CellState, FieldExtent, FieldRequest, LocalPlanner, PlanParams, PlanRequest, PotentialField,
+    TARGET_POTENTIAL, control_points, corner_cells, descend, find_local_target, merge_paths,
+    nearest_path_index, step_length, thin_collinear,
 };
-use rtnav::map::{Cell, GridMap, MapUpdate};
+use rtnav::map::{Cell, GridMap, MapUpdate, NEIGHBOURS};
 
 /// A map from rows drawn top (largest y) first: `#` obstacle, anything else free.
 fn ascii(rows: &[&str], g: f64) -> GridMap {

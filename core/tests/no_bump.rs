@@ -1,4 +1,4 @@
-//! No bump with default values on a real map (issue "One system model", spec §5 "touching
+//! No bump with default values on a real map (spec §5 "touching
 //! an obstacle cell is a bump"): drives between start/goal pairs spread over the free space of
 //! real ROS maps from the shared data, every parameter at its default. The body must stay off
 //! the obstacles whatever the map's cell size.

@@ -1,4 +1,5 @@
-//! Issue 18's reproductions, kept as regression tests (spec §2 and §4 Decisions 0.2):
+//! What the fuzzer and the soak found, kept as regression tests (spec §2 and §4 Decisions
+//! 0.2):
 //!
 //! 1. the rtnav JSON map reader allocated `rows × width` before it checked the size: the exact
 //!    inputs of the report are refused with `MapError::TooLarge`, allocating almost nothing

@@ -215,7 +215,7 @@ export function shownParams(page, options = {}) {
   }, null, options);
 }
 
-/** Saves a screenshot in tests/e2e/out/ (and, for the README's, docs/ with UPDATE_SCREENSHOTS=1). */
+/** Saves a screenshot in tests/e2e/out/ (and, for the README's and the docs' pictures, docs/ with UPDATE_SCREENSHOTS=1). */
 export async function screenshot(page, name, { docs = true, fullPage = false } = {}) {
   await mkdir(join(HERE, 'out'), { recursive: true });
   const shot = join(HERE, 'out', name);

@@ -13,10 +13,12 @@
 // changes nothing sends nothing; (7) parameters explained in English with the seed's
 // Japanese, the gains' instability bound and its warning, applied torque against MaxTorque,
 // one dmin with its clearance warning; (8) the inspector in metres and G = G(parent) + R + A
-// + P; (9) the unreachable lesson done in the page; (10) the trail drawn over the paths.
+// + P; (9) the unreachable lesson done in the page; (10) the trail drawn over the paths; (11) the
+// version of rtnav beside the title.
 // Screenshots at the three sizes go to docs/ (UPDATE_SCREENSHOTS=1).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import {
   WAIT, DRIVE, launch, openPage, screenshot, plan, telemetry, mapInfo, cellToPage, showTab,
   expectState, activateAll, logged, frames, layoutProblems, until, shownText, shownStatus,
@@ -673,6 +675,18 @@ test('(10) the trail is drawn over the paths', { timeout: 60_000 }, async () => 
   console.log(`trail: ${seen.teal} of ${seen.checked} points drawn in its colour, ${seen.underLocal} of them on the local path`);
   assert.ok(seen.checked > 50 && seen.teal / seen.checked > 0.85, JSON.stringify(seen));
   assert.ok(seen.underLocal > 10, `the trail shows where it runs on the local path: ${JSON.stringify(seen)}`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+// ------------------------------------------------------------------------------------ (11)
+
+test('(11) the title shows the version of rtnav the page runs: the workspace\'s, from Cargo.toml', { timeout: 60_000 }, async () => {
+  const cargo = readFileSync(new URL('../../Cargo.toml', import.meta.url), 'utf8');
+  const expected = /^\[workspace\.package\]\n(?:.*\n)*?version = "([^"]+)"/m.exec(cargo)?.[1];
+  assert.ok(expected, 'Cargo.toml names the workspace version');
+  const { page, problems } = await open();
+  await page.waitForFunction((v) => document.getElementById('version')?.textContent === v, expected, WAIT);
   assert.deepEqual(problems, []);
   await page.close();
 });

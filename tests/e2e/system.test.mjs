@@ -115,7 +115,7 @@ test('the System view: components, seed ports, live samples, lifecycle on a box,
   const times = seen.map((s) => Number(s.match(/tm: ([\d.]+)/)[1]));
   assert.ok(times.every((t, i) => i === 0 || t >= times[i - 1]) && times.at(-1) > times[0], `timestamps advance: ${times}`);
 
-  // The README's picture: the robot under way, TargetVelocity's connections lit.
+  // The page tour's picture (docs/page-tour.md): the robot under way, TargetVelocity's connections lit.
   await page.click(row('MotorControl', 'TargetVelocity'));
   await page.waitForSelector('#system-details li[data-id="DriveControl.TargetVelocity->MotorControl.TargetVelocity"]', WAIT);
   await page.hover(row('MotorControl', 'TargetVelocity'));

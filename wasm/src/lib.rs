@@ -49,6 +49,12 @@ pub fn start() {
     }));
 }
 
+/// The core's package version (`rtnav::VERSION`), which the page shows.
+#[wasm_bindgen]
+pub fn version() -> String {
+    rtnav::VERSION.to_owned()
+}
+
 /// Whether Rust code has panicked; after that the module must not be used any more.
 #[wasm_bindgen]
 pub fn has_panicked() -> bool {

@@ -62,7 +62,7 @@ const WASM_OPT_FEATURES: &[&str] = &[
 ];
 
 /// `wasm-opt`'s optimisation level: for speed, as the cargo profile (`-Oz`, `-Os` and `-O2`
-/// make the module smaller but compress no better: see the README).
+/// make the module smaller but compress no better: see docs/history.md).
 const WASM_OPT_LEVEL: &str = "-O3";
 
 /// Where the page loads the module from (git-ignored).

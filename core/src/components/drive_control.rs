@@ -31,8 +31,8 @@ use crate::interfaces::{ControlPoints, Pose};
 use crate::map::{GridMap, MapUpdate};
 use crate::motion::{DrivePhase, PurePursuit, PursuitParams, free_travel};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
-    TimedDouble, TimedPosition, TimedVelocity,
+    Component, Configuration, InPort, OutPort, PortView, ReturnCode, Tick, TimedDouble,
+    TimedPosition, TimedVelocity,
 };
 
 /// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, spec §4).
@@ -377,13 +377,7 @@ fn check_position(msg: &TimedPosition) -> Result<Pose, MotionError> {
 }
 
 impl Component for DriveControl {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name, config: config);
 
     fn ports(&self) -> Vec<PortView> {
         vec![
@@ -393,14 +387,6 @@ impl Component for DriveControl {
             self.out_deviating.view(),
             self.safety_stop.view(),
         ]
-    }
-
-    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
-        Some(&mut self.config)
-    }
-
-    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
-        Some(&self.config)
     }
 
     /// Starts from standstill with the path it holds (a path that came on `InControlPoints`

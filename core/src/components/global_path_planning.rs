@@ -34,8 +34,7 @@ use crate::global::{AStar, GridPlan, OctileCost};
 use crate::interfaces::{GlobalPathCourse, PlanningFailure, Pose};
 use crate::map::{Cell, GridMap, MapUpdate, escape_route};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
-    TimedPosition,
+    Component, Configuration, InPort, OutPort, PortView, ReturnCode, Tick, TimedPosition,
 };
 
 crate::define_parameters! {
@@ -297,13 +296,7 @@ fn prepend(escape: &[Cell], plan: GridPlan) -> GridPlan {
 }
 
 impl Component for GlobalPathPlanning {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.instance_name
-    }
+    component_basics!(name: instance_name, config: config);
 
     fn ports(&self) -> Vec<PortView> {
         vec![
@@ -311,14 +304,6 @@ impl Component for GlobalPathPlanning {
             self.global_path_course.view(),
             self.planning_failure.view(),
         ]
-    }
-
-    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
-        Some(&mut self.config)
-    }
-
-    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
-        Some(&self.config)
     }
 
     /// Reads the current position, replans when `dmin` changed, plans a pending request and

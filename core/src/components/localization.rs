@@ -21,8 +21,8 @@ use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::motion::{DiffDrive, Odometry, wrap_angle};
 use crate::rtc::{
-    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
-    Tick, TimedDoubleSeq, TimedPosition,
+    Component, ComponentError, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
+    TimedDoubleSeq, TimedPosition,
 };
 
 /// Where the published pose comes from (`LocalizationMode`).
@@ -211,13 +211,7 @@ impl Localization {
 }
 
 impl Component for Localization {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name, config: config);
 
     fn ports(&self) -> Vec<PortView> {
         vec![
@@ -225,14 +219,6 @@ impl Component for Localization {
             self.in_current_wheel_angle.view(),
             self.out_current_position.view(),
         ]
-    }
-
-    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
-        Some(&mut self.config)
-    }
-
-    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
-        Some(&self.config)
     }
 
     /// Locks the odometry geometry and restarts odometry at the start pose.

@@ -90,13 +90,7 @@ impl MapBuilder {
 }
 
 impl Component for MapBuilder {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name);
 
     fn ports(&self) -> Vec<PortView> {
         vec![self.set_map.view()]

@@ -77,13 +77,7 @@ impl MapMaintenance {
 }
 
 impl Component for MapMaintenance {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name);
 
     fn ports(&self) -> Vec<PortView> {
         vec![self.map_update_out.view()]

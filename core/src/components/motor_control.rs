@@ -681,13 +681,7 @@ fn default_geometry() -> MotorGeometry {
 }
 
 impl Component for MotorControl {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name, config: config);
 
     fn ports(&self) -> Vec<PortView> {
         vec![
@@ -699,14 +693,6 @@ impl Component for MotorControl {
             self.out_simulated_position_to_invent_gui.view(),
             self.out_simulated_position_to_localization.view(),
         ]
-    }
-
-    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
-        Some(&mut self.config)
-    }
-
-    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
-        Some(&self.config)
     }
 
     /// 002 §5.2.3: (1) every held value and flag off; (2) the `on_activation` parameters

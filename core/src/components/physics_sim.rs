@@ -259,13 +259,7 @@ impl PhysicsSim {
 }
 
 impl Component for PhysicsSim {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name, config: config);
 
     fn ports(&self) -> Vec<PortView> {
         vec![
@@ -274,14 +268,6 @@ impl Component for PhysicsSim {
             self.position.view(),
             self.bump.view(),
         ]
-    }
-
-    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
-        Some(&mut self.config)
-    }
-
-    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
-        Some(&self.config)
     }
 
     /// Checks the period and starts the simulated clock at the activation time.

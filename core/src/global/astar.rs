@@ -41,23 +41,23 @@ use super::cost::OctileCost;
 use super::heap::{RadixHeap, RadixKey};
 use crate::errors::GlobalPlanningError;
 use crate::interfaces::GlobalPathCourse;
-use crate::map::{Cell, GridMap, MapStamp};
+use crate::map::{Cell, GridMap, MapStamp, ORTHOGONAL_FIRST};
 
 mod jump;
 use jump::BitLines;
 
-/// The eight moves `(dx, dy)`: east, north, west, south, then the diagonals NE, NW, SW, SE.
-/// Diagonal `4 + k` lies between orthogonals `k` and `(k + 1) % 4`.
-const MOVES: [(i8, i8); 8] = [
-    (1, 0),
-    (0, 1),
-    (-1, 0),
-    (0, -1),
-    (1, 1),
-    (-1, 1),
-    (-1, -1),
-    (1, -1),
-];
+/// The eight moves `(dx, dy)` of [`ORTHOGONAL_FIRST`] (east, north, west, south, then the
+/// diagonals NE, NW, SW, SE; diagonal `4 + k` lies between orthogonals `k` and `(k + 1) % 4`),
+/// as bytes: a move's index is what a cell byte keeps.
+const MOVES: [(i8, i8); 8] = {
+    let mut moves = [(0, 0); 8];
+    let mut k = 0;
+    while k < 8 {
+        moves[k] = (ORTHOGONAL_FIRST[k].0 as i8, ORTHOGONAL_FIRST[k].1 as i8);
+        k += 1;
+    }
+    moves
+};
 
 /// A plan: the cells from start to goal and their cost.
 #[derive(Debug, Clone, PartialEq)]
@@ -441,6 +441,35 @@ impl AStar {
     }
 }
 
+/// What both searches (cell by cell and over jump points) work with: the tag of this
+/// generation's reached cells, the moves as index offsets, the step costs as keys and the
+/// heuristic.
+struct Costs<K> {
+    tag: u8,
+    offsets: [isize; 8],
+    straight: K,
+    diagonal: K,
+    heuristic: Octile<K>,
+}
+
+/// The octile distance to the goal as a key: (max − min) + min·√2 = max·1 + min·(√2 − 1),
+/// so max·key(1) + min·(key(√2) − key(1)) (keys are linear and exact).
+#[derive(Clone, Copy)]
+struct Octile<K> {
+    unit: K,
+    /// key(√2) − key(1).
+    extra: K,
+    goal: (u32, u32),
+}
+
+impl<K: Key> Octile<K> {
+    #[inline(always)]
+    fn at(self, x: u32, y: u32) -> K {
+        let (dx, dy) = (x.abs_diff(self.goal.0), y.abs_diff(self.goal.1));
+        K::times(self.unit, dx.max(dy)) + K::times(self.extra, dx.min(dy))
+    }
+}
+
 /// One search over the cell bytes.
 struct Search<'a> {
     cells: &'a mut [u8],
@@ -451,6 +480,40 @@ struct Search<'a> {
 }
 
 impl Search<'_> {
+    /// Starts a search from padded index `s` (cell `start`): `scratch.g` covers the cells,
+    /// `s` is reached at cost 0 and is alone in the open list. Returns the search's costs.
+    #[inline(always)]
+    fn begin<K: Key>(
+        &mut self,
+        s: usize,
+        start: Cell,
+        scratch: &mut Scratch<K>,
+    ) -> Option<Costs<K>> {
+        let n = self.cells.len();
+        if scratch.g.len() < n {
+            scratch.g.resize(n, K::default());
+        }
+        let stride = self.stride as isize;
+        let (straight, diagonal) = (K::of(OctileCost::STRAIGHT), K::of(OctileCost::DIAGONAL));
+        let costs = Costs {
+            tag: PASSABLE | (self.generation << GENERATION_SHIFT),
+            offsets: MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride),
+            straight,
+            diagonal,
+            heuristic: Octile {
+                unit: straight,
+                extra: diagonal - straight,
+                goal: (self.goal.0 as u32, self.goal.1 as u32),
+            },
+        };
+        self.cells[s] = costs.tag;
+        scratch.g[s] = K::default();
+        scratch.open.clear();
+        let h = costs.heuristic.at(start.0 as u32, start.1 as u32);
+        scratch.open.push(h, s as u32).ok()?;
+        Some(costs)
+    }
+
     /// Runs A* from padded index `s` to `t`; returns the number of expanded cells if the
     /// goal was reached (its parent moves are then in the cell bytes).
     fn run<K: Key>(
@@ -460,32 +523,17 @@ impl Search<'_> {
         start: Cell,
         scratch: &mut Scratch<K>,
     ) -> Option<usize> {
+        let Costs {
+            tag,
+            offsets,
+            straight,
+            diagonal,
+            heuristic,
+        } = self.begin(s, start, scratch)?;
+        let stride = self.stride;
         let cells = &mut *self.cells;
-        if scratch.g.len() < cells.len() {
-            scratch.g.resize(cells.len(), K::default());
-        }
         let g = &mut scratch.g[..cells.len()];
         let open = &mut scratch.open;
-        open.clear();
-        let generation = self.generation;
-        let tag = PASSABLE | (generation << GENERATION_SHIFT);
-        let stride = self.stride;
-        let offsets: [isize; 8] =
-            MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride as isize);
-        let straight = K::of(OctileCost::STRAIGHT);
-        let diagonal = K::of(OctileCost::DIAGONAL);
-        let (gx, gy) = (self.goal.0 as u32, self.goal.1 as u32);
-        // h of a cell: (max − min) + min·√2 = max·1 + min·(√2 − 1): as a key, max·key(1) +
-        // min·(key(√2) − key(1)) (keys are linear and exact).
-        let (unit, extra) = (straight, diagonal - straight);
-        let heuristic = |x: u32, y: u32| {
-            let (dx, dy) = (x.abs_diff(gx), y.abs_diff(gy));
-            K::times(unit, dx.max(dy)) + K::times(extra, dx.min(dy))
-        };
-        cells[s] = tag;
-        g[s] = K::default();
-        let h = heuristic(start.0 as u32, start.1 as u32);
-        open.push(h, s as u32).ok()?;
         let mut expanded = 0usize;
         while let Some((f, node)) = open.pop() {
             let p = node as usize;
@@ -500,7 +548,7 @@ impl Search<'_> {
             // Padded coordinates: (x + 1, y + 1); 32-bit division (a map has < 2^24 cells).
             let (px, py) = (p as u32 % stride as u32, p as u32 / stride as u32);
             // g from the queue's f (keys are exact and linear): no read of g[p].
-            let gp = f - heuristic(px - 1, py - 1);
+            let gp = f - heuristic.at(px - 1, py - 1);
             // Bit k set: orthogonal move k leads to a passable cell.
             let orth = (cells[p + 1] >> 7)
                 | (cells[p + stride] >> 7) << 1
@@ -533,7 +581,7 @@ impl Search<'_> {
                 let mx = (px as i32 + i32::from(dx)) as u32 - 1;
                 let my = (py as i32 + i32::from(dy)) as u32 - 1;
                 // Never fails: f never decreases (consistent heuristic, exact keys).
-                open.push(ng + heuristic(mx, my), m as u32).ok()?;
+                open.push(ng + heuristic.at(mx, my), m as u32).ok()?;
             }
         }
         None

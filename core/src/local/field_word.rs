@@ -10,7 +10,7 @@ use super::potential_field::CellState;
 pub(super) const UNREACHED: u32 = CellState::Unreached as u32;
 pub(super) const REACHED: u32 = CellState::Reached as u32;
 pub(super) const IMPASSABLE: u32 = CellState::Impassable as u32;
-/// A cell's word: its [`CellState`] in bits 0–1, `1 +` the index into [`NEIGHBOURS`](super::potential_field::NEIGHBOURS) of
+/// A cell's word: its [`CellState`] in bits 0–1, `1 +` the index into [`NEIGHBOURS`](crate::map::NEIGHBOURS) of
 /// the move it was reached by in bits 2–5 (0: none), and its squared obstacle distance in
 /// cells² from bit 6 on (kept with the impassable marks; 0 on impassable cells): what the
 /// expansion of a neighbour reads, in one load.

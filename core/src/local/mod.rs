@@ -32,6 +32,5 @@ pub use local_target::{
 pub use merge::merge_paths;
 pub use planner::{LocalPlan, LocalPlanner, PlanParams, PlanRequest, Progress};
 pub use potential_field::{
-    CellInfo, CellState, FieldCell, FieldExtent, FieldRequest, NEIGHBOURS, PotentialField,
-    TARGET_POTENTIAL,
+    CellInfo, CellState, FieldCell, FieldExtent, FieldRequest, PotentialField, TARGET_POTENTIAL,
 };

@@ -49,23 +49,10 @@ use super::field_word::{
 };
 use crate::errors::LocalPathError;
 use crate::interfaces::Direction;
-use crate::map::{Cell, GridMap, MapStamp};
+use crate::map::{Cell, GridMap, MapStamp, NEIGHBOURS};
 
 /// The potential of the local target (000 §5.2.4.9: "ポテンシャル値(0.1)を設定").
 pub const TARGET_POTENTIAL: f64 = 0.1;
-
-/// The 8-neighbour offsets (000 §5.2.4.9 ※1 "８連結") in the order a finalized cell assigns
-/// its neighbours: counter-clockwise from +x. Ties in `G` are broken by this order.
-pub const NEIGHBOURS: [(i64, i64); 8] = [
-    (1, 0),
-    (1, 1),
-    (0, 1),
-    (-1, 1),
-    (-1, 0),
-    (-1, -1),
-    (0, -1),
-    (1, -1),
-];
 
 const NOT_FINAL: u32 = u32::MAX;
 /// A reset sweeps the whole field instead of visiting the reached cells once more than one

@@ -9,11 +9,11 @@
 //! `G(c) = G(p) + R(c) + A(c) + P(c)`; diagonal steps never cut the corner of an impassable
 //! cell; [`FieldExtent::UntilCurrent`] stops once the current cell is finalized.
 
-use super::potential_field::{CellState, FieldExtent, FieldRequest, NEIGHBOURS, TARGET_POTENTIAL};
+use super::potential_field::{CellState, FieldExtent, FieldRequest, TARGET_POTENTIAL};
 use super::radix_queue::RadixQueue;
 use crate::errors::LocalPathError;
 use crate::interfaces::Direction;
-use crate::map::GridMap;
+use crate::map::{GridMap, NEIGHBOURS};
 
 /// One cell of the reference field; everything 0 / `None` unless reached.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]

@@ -154,18 +154,8 @@ const SCAN_LIMIT: u64 = 24;
 /// columns count as `g = 0`.
 #[inline]
 fn row_scan(g: &[u32], mut emit: impl FnMut(usize, u64)) {
-    let w = g.len();
-    for x in 0..w {
-        let mut best = u64::from(g[x]) * u64::from(g[x]);
-        let mut k = 1usize;
-        while ((k * k) as u64) < best {
-            let left = if k <= x { u64::from(g[x - k]) } else { 0 };
-            let right = g.get(x + k).map_or(0, |&v| u64::from(v));
-            let side = left.min(right);
-            best = best.min((k * k) as u64 + side * side);
-            k += 1;
-        }
-        emit(x, best);
+    for x in 0..g.len() {
+        emit(x, scan_one(g, x));
     }
 }
 
@@ -478,8 +468,8 @@ impl Changed {
     }
 }
 
-/// The squared distance of cell `x` of a row from its column phase `g`: [`row_scan`] for
-/// one cell.
+/// The squared distance of cell `x` of a row from its column phase `g`, by [`row_scan`]'s
+/// bounded scan.
 #[inline]
 fn scan_one(g: &[u32], x: usize) -> u64 {
     let mut best = u64::from(g[x]) * u64::from(g[x]);

@@ -9,19 +9,7 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use super::{Cell, GridMap};
-
-/// The 8 neighbour offsets, in the planners' order (E, N, W, S, NE, NW, SW, SE).
-const STEPS: [(i64, i64); 8] = [
-    (1, 0),
-    (0, 1),
-    (-1, 0),
-    (0, -1),
-    (1, 1),
-    (-1, 1),
-    (-1, -1),
-    (1, -1),
-];
+use super::{Cell, GridMap, ORTHOGONAL_FIRST};
 
 /// The shortest route in metres (octile steps) from `from` to the nearest cell that is not
 /// within `dmin` of an obstacle, through cells that are not obstacles, never cutting the
@@ -62,7 +50,7 @@ pub fn escape_route(map: &GridMap, from: Cell, dmin: f64) -> Option<Vec<Cell>> {
             return Some(route);
         }
         let (cx, cy) = (cell.0 as i64, cell.1 as i64);
-        for (dx, dy) in STEPS {
+        for (dx, dy) in ORTHOGONAL_FIRST {
             let (nx, ny) = (cx + dx, cy + dy);
             if !map.contains(nx, ny) || map.is_obstacle(nx, ny) {
                 continue;

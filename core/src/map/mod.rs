@@ -10,6 +10,7 @@ mod escape;
 pub mod formats;
 mod grid_map;
 mod map_update;
+mod neighbours;
 
 pub use clearance::{ClearanceTracker, clearance, clearance_lower_bound, could_be_below};
 pub use distance::euclidean_distance_squared;
@@ -21,3 +22,4 @@ pub use grid_map::{
 };
 pub(crate) use grid_map::{CellRect, MapStamp};
 pub use map_update::MapUpdate;
+pub use neighbours::{NEIGHBOURS, ORTHOGONAL_FIRST};

@@ -175,54 +175,35 @@ impl PhysicsParams {
         }
     }
 
-    /// Checks every value (positive / non-negative and finite, as documented per field).
+    /// Checks every value (positive / non-negative and finite, as documented per field), in
+    /// this order; the first that breaks its bound is the error.
     pub fn validate(&self) -> Result<(), MotionError> {
-        let positive = [
-            ("mass", self.mass),
-            ("yaw_inertia", self.yaw_inertia),
-            ("wheel_radius", self.wheel_radius),
-            ("axle_length", self.axle_length),
+        use Bound::{Finite, NonNegative, Positive};
+        let checks = [
+            ("mass", self.mass, Positive),
+            ("yaw_inertia", self.yaw_inertia, Positive),
+            ("wheel_radius", self.wheel_radius, Positive),
+            ("axle_length", self.axle_length, Positive),
+            ("wheel_inertia", self.wheel_inertia, NonNegative),
+            ("viscous_friction", self.viscous_friction, NonNegative),
+            ("max_torque", self.max_torque, NonNegative),
+            ("body_radius", self.body_radius, NonNegative),
+            ("model_offset_x", self.model_offset_x, Finite),
+            ("model_offset_y", self.model_offset_y, Finite),
+            ("model_offset_angle", self.model_offset_angle, Finite),
+            ("model_z", self.model_z, Finite),
         ];
-        for (name, value) in positive {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(MotionError::BadParameter {
-                    name: name.to_owned(),
-                    value,
-                    reason: "must be positive and finite",
-                });
-            }
+        match checks
+            .into_iter()
+            .find(|&(_, value, bound)| !bound.holds(value))
+        {
+            Some((name, value, bound)) => Err(MotionError::BadParameter {
+                name: name.to_owned(),
+                value,
+                reason: bound.reason(),
+            }),
+            None => Ok(()),
         }
-        let non_negative = [
-            ("wheel_inertia", self.wheel_inertia),
-            ("viscous_friction", self.viscous_friction),
-            ("max_torque", self.max_torque),
-            ("body_radius", self.body_radius),
-        ];
-        for (name, value) in non_negative {
-            if !(value.is_finite() && value >= 0.0) {
-                return Err(MotionError::BadParameter {
-                    name: name.to_owned(),
-                    value,
-                    reason: "must be non-negative and finite",
-                });
-            }
-        }
-        let finite = [
-            ("model_offset_x", self.model_offset_x),
-            ("model_offset_y", self.model_offset_y),
-            ("model_offset_angle", self.model_offset_angle),
-            ("model_z", self.model_z),
-        ];
-        for (name, value) in finite {
-            if !value.is_finite() {
-                return Err(MotionError::BadParameter {
-                    name: name.to_owned(),
-                    value,
-                    reason: "must be finite",
-                });
-            }
-        }
-        Ok(())
     }
 
     /// The wheel-space mass matrix `M = [[a, c], [c, a]]` (spec §5).
@@ -234,6 +215,34 @@ impl PhysicsParams {
         let a = trans + yaw + self.wheel_inertia;
         let c = trans - yaw;
         Matrix2::new(a, c, c, a)
+    }
+}
+
+/// What a parameter of [`PhysicsParams::validate`] must be.
+#[derive(Debug, Clone, Copy)]
+enum Bound {
+    Positive,
+    NonNegative,
+    Finite,
+}
+
+impl Bound {
+    fn holds(self, value: f64) -> bool {
+        value.is_finite()
+            && match self {
+                Self::Positive => value > 0.0,
+                Self::NonNegative => value >= 0.0,
+                Self::Finite => true,
+            }
+    }
+
+    /// The words of [`MotionError::BadParameter`]'s `reason`.
+    fn reason(self) -> &'static str {
+        match self {
+            Self::Positive => "must be positive and finite",
+            Self::NonNegative => "must be non-negative and finite",
+            Self::Finite => "must be finite",
+        }
     }
 }
 

@@ -147,7 +147,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_velocity_reads_as_the_issue_writes_it() {
+    fn a_velocity_reads_as_the_system_tab_shows_it() {
         let v = TimedVelocity {
             tm: Time::from_nanos(12_340_000_000),
             vx: 0.480_000_1,

@@ -66,8 +66,8 @@ use crate::local::{
 };
 use crate::map::{Cell, GridMap, MapUpdate};
 use crate::rtc::{
-    Component, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
-    TimedDouble, TimedPosition,
+    Component, Configuration, InPort, OutPort, PortView, ReturnCode, Tick, TimedDouble,
+    TimedPosition,
 };
 
 /// After a failed plan, how long until the next attempt \[ns\] (spec §3 Decision 0.2).
@@ -687,13 +687,7 @@ fn plan_params(params: &LocalPathPlanningParams) -> PlanParams {
 }
 
 impl Component for LocalPathPlanning {
-    fn boxed_clone(&self) -> Option<Box<dyn Component>> {
-        Some(Box::new(self.clone()))
-    }
-
-    fn instance_name(&self) -> &str {
-        &self.name
-    }
+    component_basics!(name: name, config: config);
 
     fn ports(&self) -> Vec<PortView> {
         vec![
@@ -704,14 +698,6 @@ impl Component for LocalPathPlanning {
             self.drive_cons.view(),
             self.invent_gui_failure.view(),
         ]
-    }
-
-    fn configuration(&mut self) -> Option<&mut dyn ConfigAccess> {
-        Some(&mut self.config)
-    }
-
-    fn configuration_ref(&self) -> Option<&dyn ConfigAccess> {
-        Some(&self.config)
     }
 
     /// 000 §5.2.3: initialisation. Stale port data is dropped. Spec §3 Decision 0.2: what

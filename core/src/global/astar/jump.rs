@@ -2,10 +2,7 @@
 //! and, transposed, columns), straight runs 64 cells a step, diagonal runs, and A* over the
 //! jump points they find (see the parent module's documentation).
 
-use super::{
-    CLOSED, GENERATION_MASK, GENERATION_SHIFT, Key, MOVE_MASK, MOVES, OctileCost, PASSABLE,
-    Scratch, Search,
-};
+use super::{CLOSED, Costs, GENERATION_MASK, Key, MOVE_MASK, PASSABLE, Scratch, Search};
 use crate::map::Cell;
 
 /// The passable cells of the padded grid as bits: each row (x fastest) and each column
@@ -194,31 +191,19 @@ impl Search<'_> {
         scratch: &mut Scratch<K>,
     ) -> Option<usize> {
         let n = self.cells.len();
-        if scratch.g.len() < n {
-            scratch.g.resize(n, K::default());
-        }
         if scratch.parent.len() < n {
             scratch.parent.resize(n, 0);
         }
-        let Scratch { g, parent, open } = scratch;
-        open.clear();
-        let tag = PASSABLE | (self.generation << GENERATION_SHIFT);
+        let Costs {
+            tag,
+            offsets,
+            straight,
+            diagonal,
+            heuristic,
+        } = self.begin(s, start, scratch)?;
         let stride = self.stride;
-        let offsets: [isize; 8] =
-            MOVES.map(|(dx, dy)| isize::from(dx) + isize::from(dy) * stride as isize);
-        let straight = K::of(OctileCost::STRAIGHT);
-        let diagonal = K::of(OctileCost::DIAGONAL);
-        let (gx, gy) = (self.goal.0 as u32, self.goal.1 as u32);
-        let (unit, extra) = (straight, diagonal - straight);
-        let heuristic = |x: u32, y: u32| {
-            let (dx, dy) = (x.abs_diff(gx), y.abs_diff(gy));
-            K::times(unit, dx.max(dy)) + K::times(extra, dx.min(dy))
-        };
-        self.cells[s] = tag;
-        g[s] = K::default();
+        let Scratch { g, parent, open } = scratch;
         parent[s] = s as u32;
-        open.push(heuristic(start.0 as u32, start.1 as u32), s as u32)
-            .ok()?;
         let mut expanded = 0usize;
         while let Some((f, node)) = open.pop() {
             let p = node as usize;
@@ -231,7 +216,7 @@ impl Search<'_> {
                 return Some(expanded);
             }
             let (px, py) = (p as u32 % stride as u32, p as u32 / stride as u32);
-            let gp = f - heuristic(px - 1, py - 1);
+            let gp = f - heuristic.at(px - 1, py - 1);
             let pass = |o: isize| self.cells[p.wrapping_add_signed(o)] >> 7;
             // Bit k: orthogonal move k leads to a passable cell.
             let orth = pass(offsets[0])
@@ -292,7 +277,7 @@ impl Search<'_> {
                 parent[m] = p as u32;
                 let (mx, my) = (m as u32 % stride as u32 - 1, m as u32 / stride as u32 - 1);
                 // Never fails: f never decreases (consistent heuristic, exact keys).
-                open.push(ng + heuristic(mx, my), m as u32).ok()?;
+                open.push(ng + heuristic.at(mx, my), m as u32).ok()?;
             }
         }
         None

@@ -305,6 +305,7 @@ impl History {
         Replay {
             scenario_hash: scenario_hash.to_owned(),
             behaviour: crate::BEHAVIOUR_VERSION,
+            package_version: Some(crate::VERSION.to_owned()),
             setup: self.setup.clone(),
             inputs: self.inputs[..self.next].to_vec(),
             end_ns: system.time_ns(),

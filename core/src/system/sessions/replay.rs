@@ -8,7 +8,7 @@
 //!
 //! ```json
 //! { "format": "rtnav-replay", "version": 2,
-//!   "scenario_hash": "5be1…", "behaviour": 1,
+//!   "scenario_hash": "5be1…", "behaviour": 1, "package_version": "0.2.0",
 //!   "setup": { "v": 1, "scenario": "open_field", "start": null, "goal": null,
 //!              "backward": false, "edits": [], "params": {} },
 //!   "inputs": [ { "t_ns": 1200000000, "input": { "type": "activate_all" } },
@@ -30,7 +30,8 @@
 //! whose content has changed, or in a build of another behaviour version, is refused with
 //! that reason ([`SessionError::ReplayScenarioChanged`], [`SessionError::ReplayBehaviourChanged`])
 //! — never re-judged silently. A file of version 1 carried neither and is refused for its
-//! version.
+//! version. It also names the package version of the build that wrote it ([`crate::VERSION`],
+//! for people; files written before it was recorded have none and load as before).
 
 use std::collections::BTreeMap;
 
@@ -68,6 +69,9 @@ pub struct Replay {
     pub scenario_hash: String,
     /// The core's behaviour version that made the run ([`BEHAVIOUR_VERSION`]).
     pub behaviour: u32,
+    /// The package version of the build that wrote the file ([`crate::VERSION`]); `None` in
+    /// files written before it was recorded. Not checked on loading.
+    pub package_version: Option<String>,
     /// The set-up the run started from.
     pub setup: Setup,
     /// Every request carried out, in the order made (times never decrease).
@@ -97,6 +101,8 @@ struct File {
     version: u32,
     scenario_hash: String,
     behaviour: u32,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    package_version: Option<String>,
     setup: Setup,
     inputs: Vec<Entry>,
     end_ns: u64,
@@ -205,6 +211,7 @@ impl Replay {
             version: REPLAY_VERSION,
             scenario_hash: self.scenario_hash.clone(),
             behaviour: self.behaviour,
+            package_version: self.package_version.clone(),
             setup: self.setup.clone(),
             inputs: self.inputs.iter().map(Entry::of).collect(),
             end_ns: self.end_ns,
@@ -292,6 +299,7 @@ impl Replay {
         Ok(Self {
             scenario_hash: file.scenario_hash,
             behaviour: file.behaviour,
+            package_version: file.package_version,
             setup: file.setup,
             inputs,
             end_ns: file.end_ns,
@@ -372,6 +380,7 @@ mod tests {
         Replay {
             scenario_hash: "a".repeat(64),
             behaviour: BEHAVIOUR_VERSION,
+            package_version: Some(crate::VERSION.to_owned()),
             setup,
             inputs,
             end_ns: 9,
@@ -401,6 +410,19 @@ mod tests {
         let bom = Replay::from_json(&format!("\u{feff}{text}")).unwrap();
         assert_eq!(bom.to_json().unwrap(), text);
         assert_eq!(back.to_json().unwrap(), text);
+    }
+
+    #[test]
+    fn the_package_version_is_written_and_a_file_without_it_loads() {
+        let r = sample();
+        let text = r.to_json().unwrap();
+        let field = format!(",\"package_version\":\"{}\"", crate::VERSION);
+        assert!(text.contains(&field), "{text}");
+        let older_text = text.replace(&field, "");
+        let older = Replay::from_json(&older_text).unwrap();
+        assert_eq!(older.package_version, None);
+        // Everything else as written (the text, since NaN is not equal to itself).
+        assert_eq!(older.to_json().unwrap(), older_text);
     }
 
     #[test]
