@@ -195,7 +195,7 @@ fn check_size_is_the_one_size_check_of_every_reader() {
     ));
 }
 
-/// Found by `rtnav fuzz` after the ROS reader moved to saphyr-parser's events (seed
+/// Found by the fuzzer after the ROS reader moved to saphyr-parser's events (seed
 /// 1796172591, target `ros-yaml`, case 747813): flow collections left open after a scalar
 /// (`{000]` over and over) cost the parser about 90 bytes of state per byte of input — 35 MiB
 /// for 384 KB. A map_server YAML is a few lines: a file over `MAX_YAML_BYTES` is refused
@@ -460,7 +460,7 @@ proptest! {
     }
 }
 
-// ------------------------------------------------------------------ found by `rtnav fuzz`
+// ------------------------------------------------------------------ found by the fuzzer
 
 /// Found by the fuzzer (target `components`, DriveControl): control points with huge finite
 /// coordinates made the pure-pursuit command NaN (∞ − ∞ on the way); the NaN was kept as the
@@ -763,7 +763,7 @@ fn local_path_planning_ignores_port_samples_with_a_bad_timestamp() {
 
 // ------------------------------------------------------------------ share tokens
 
-/// Found by `rtnav fuzz` (target `share-token`): a 22 KB token that inflates past the 16 MiB
+/// Found by the fuzzer (target `share-token`): a 22 KB token that inflates past the 16 MiB
 /// limit was refused with `format!("{e:?}")` of miniz_oxide's `DecompressError`, which holds
 /// the whole partial output — a 67 MB message, 76 MiB asked at once, about a second. Now the
 /// message names the limit, and the refusal costs the inflated bytes and little more.

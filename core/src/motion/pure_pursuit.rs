@@ -74,7 +74,7 @@ impl Polyline {
             cumulative.push(s);
         }
         if !s.is_finite() {
-            // Finite points so far apart that the length overflows (found by `rtnav fuzz`).
+            // Finite points so far apart that the length overflows (found by the fuzzer).
             return Err(MotionError::NonFinite {
                 port: "InControlPoints",
                 field: "length".to_owned(),

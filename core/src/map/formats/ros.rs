@@ -43,7 +43,7 @@ const YAML: &str = "ROS map YAML";
 
 /// The largest map_server YAML file read \[bytes\]: the file is a handful of lines, and the
 /// YAML parser keeps state for every collection left open, about 90 bytes per byte of input
-/// at worst (found by `rtnav fuzz`), so a larger file is refused before it is
+/// at worst (found by the fuzzer), so a larger file is refused before it is
 /// parsed.
 pub const MAX_YAML_BYTES: usize = 64 * 1024;
 const IMAGE: &str = "ROS map image";

@@ -472,7 +472,7 @@ pub fn judge(
     } else {
         *still_since = None;
     }
-    (now >= limit_ns).then(|| Outcome {
+    (now >= limit_ns).then_some(Outcome {
         kind: OutcomeKind::TimeLimit,
         reason: Some(EndReason::TimeLimit {
             seconds: limit_ns as f64 * 1e-9,
