@@ -23,7 +23,7 @@ async function browser(options = {}) {
 
 /** Sets the parameter in the Parameters tab, then goes back to the RT-components tab. */
 async function setParamThenBack(page, component, name, value) {
-  await setParamThenBack(page, component, name, value);
+  await setParam(page, component, name, value);
   await showTab(page, 'rtc');
 }
 async function pick(page, name) {

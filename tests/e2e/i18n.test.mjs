@@ -51,7 +51,7 @@ test('every key the page asks for is in the catalogue', () => {
   for (const m of read('web', 'index.html').matchAll(/data-i18n(?:-[a-z-]+)?="([\w.]+)"/g)) asked.add(m[1]);
   assert.ok(asked.size > 150, `only ${asked.size} keys found: the scan is broken`);
   // Keys made from the core's names: the checks, the exercise states and verdicts.
-  const exercise = read('core', 'src', 'system', 'exercise.rs');
+  const exercise = read('core', 'src', 'system', 'runs', 'exercise.rs');
   const enumBody = (name) => exercise.split(`pub enum ${name} {`)[1].split('\n}')[0];
   const variants = (name) => [...enumBody(name).matchAll(/^ {4}([A-Z]\w*)/gm)].map((m) => snake(m[1]));
   const checks = variants('Check');
