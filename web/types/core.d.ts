@@ -1249,7 +1249,7 @@ state: SystemState,
  */
 driving: boolean, 
 /**
- * Which [`Status`](super::Status) it is (`driving`, `arrived`, `no_route`, …): what the
+ * Which [`Status`](crate::system::Status) it is (`driving`, `arrived`, `no_route`, …): what the
  * page ties its notices to.
  */
 status_kind: string, 
