@@ -13,6 +13,7 @@ use std::rc::Rc;
 use rtnav::rtc::{Component, ComponentError, ReturnCode, Tick};
 
 pub mod data;
+pub mod fixtures;
 
 /// The callbacks of seed 003's table ("アクションのまとめ"), in the trait's order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

@@ -20,6 +20,7 @@ pub use crate::motion::MotionError;
 #[cfg(feature = "render")]
 pub use crate::render::RenderError;
 pub use crate::rtc::{ConfigError, LifecycleError, TimestampError};
+pub use crate::script::ScriptError;
 pub use crate::system::{ConfBundleError, ScenarioError, SessionError, SystemError};
 
 /// Any error `rtnav` returns.
@@ -64,6 +65,9 @@ pub enum Error {
     /// A configuration bundle that cannot be read or applied (spec §1).
     #[error(transparent)]
     ConfBundle(#[from] ConfBundleError),
+    /// A student's script that cannot be loaded, or whose action failed (spec §8).
+    #[error(transparent)]
+    Script(#[from] ScriptError),
 }
 
 /// An error as data, for a GUI that says it in its own language: the area (the variant of
@@ -102,6 +106,7 @@ impl Error {
         ("Scenario", ScenarioError::VARIANTS),
         ("Session", SessionError::VARIANTS),
         ("ConfBundle", ConfBundleError::VARIANTS),
+        ("Script", ScriptError::VARIANTS),
     ];
 
     /// The error as data ([`ErrorDetail`]).
@@ -121,6 +126,7 @@ impl Error {
             Error::Scenario(e) => serde_json::to_value(e),
             Error::Session(e) => serde_json::to_value(e),
             Error::ConfBundle(e) => serde_json::to_value(e),
+            Error::Script(e) => serde_json::to_value(e),
         };
         let mut fields = match value {
             Ok(serde_json::Value::Object(m)) => m,

@@ -29,6 +29,7 @@ pub mod render;
 pub mod rtc;
 pub mod scenario_check;
 pub mod scenario_data;
+pub mod script;
 pub mod system;
 
 pub use errors::{Error, ErrorDetail, Result};

@@ -245,7 +245,7 @@ fn decision_one_dmin_warns_whenever_the_body_can_touch() {
             .count()
     };
     let grid = s.map().unwrap().grid_size();
-    let radius = s.wiring().motor_control().geometry().radius_of_body_area;
+    let radius = s.wiring().motor_geometry().radius_of_body_area;
     let dmin = param(&s, ComponentKind::LocalPathPlanning, "dmin");
     assert!(dmin - grid / 2.0 >= radius, "the scenario itself is safe");
     assert_eq!(warnings(&s), 0);
@@ -374,10 +374,7 @@ fn decision_on_activation_values_apply_only_when_activation_succeeds() {
     let config = s.wiring().config(motor).unwrap();
     assert_eq!(config.effective_value("radiusOfBodyArea").unwrap(), 0.45);
     assert!(config.is_pending("radiusOfBodyArea").unwrap());
-    assert_eq!(
-        s.wiring().motor_control().geometry().radius_of_body_area,
-        0.45
-    );
+    assert_eq!(s.wiring().motor_geometry().radius_of_body_area, 0.45);
     // Put right, reset and activate: now they apply.
     apply(
         &mut s,
@@ -390,10 +387,7 @@ fn decision_on_activation_values_apply_only_when_activation_succeeds() {
     apply(&mut s, Input::Reset { component: motor });
     apply(&mut s, Input::Activate { component: motor });
     assert_eq!(s.component_state(motor), LifecycleState::Active);
-    assert_eq!(
-        s.wiring().motor_control().geometry().radius_of_body_area,
-        0.3
-    );
+    assert_eq!(s.wiring().motor_geometry().radius_of_body_area, 0.3);
 }
 
 #[test]

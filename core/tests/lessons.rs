@@ -105,7 +105,7 @@ fn drive(name: &str, params: &[(&str, &str, f64)]) -> Drive {
     while run.advance(SAMPLE_TICKS).is_none() {
         let s = run.system();
         let w = s.wiring();
-        let d = w.drive_control();
+        let d = w.drive_control().expect("the built-in DriveControl");
         max_deviation = max_deviation.max(d.deviation().unwrap_or(0.0));
         let now = d.pursuit().phase() == DrivePhase::TurnInPlace;
         if now {

@@ -311,7 +311,10 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
             if component == "PhysicsSim0" && callback == "on_execute" && *r == reason
     )));
     assert!(
-        s.wiring().motor_control().is_stopped(),
+        s.wiring()
+            .motor_control()
+            .expect("the built-in MotorControl")
+            .is_stopped(),
         "bump detection called Stop"
     );
     // The robot stays where it stopped.

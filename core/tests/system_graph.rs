@@ -310,7 +310,10 @@ fn cutting_target_velocity_stops_motor_control_safely_until_it_is_restored() {
     // No velocity reaches MotorControl: after INPUT_TIMEOUT_NS it stops, zero torque.
     let stale = |s: &System| {
         matches!(
-            s.wiring().motor_control().status(),
+            s.wiring()
+                .motor_control()
+                .expect("the built-in MotorControl")
+                .status(),
             MotorStatus::SafeStop(_)
         )
     };
@@ -324,7 +327,12 @@ fn cutting_target_velocity_stops_motor_control_safely_until_it_is_restored() {
         (INPUT_TIMEOUT_NS - 20_000_000..=INPUT_TIMEOUT_NS + 2_000_000).contains(&waited),
         "{waited} ns"
     );
-    let status = s.wiring().motor_control().status().to_string();
+    let status = s
+        .wiring()
+        .motor_control()
+        .expect("the built-in MotorControl")
+        .status()
+        .to_string();
     assert!(status.contains("TargetVelocity"), "{status}");
     assert_eq!(
         graph(&s).connection(TARGET_VELOCITY).unwrap().carried,
@@ -339,7 +347,13 @@ fn cutting_target_velocity_stops_motor_control_safely_until_it_is_restored() {
     }
     assert!(speeds.windows(2).all(|w| w[1] < w[0]), "{speeds:?}");
     assert!(speeds[3] < 0.6 * speeds[0], "{speeds:?}");
-    assert_eq!(s.wiring().motor_control().last_torque(), [0.0; 2]);
+    assert_eq!(
+        s.wiring()
+            .motor_control()
+            .expect("the built-in MotorControl")
+            .last_torque(),
+        [0.0; 2]
+    );
 
     // Restored: the drive resumes.
     s.apply(&restore).unwrap();
@@ -347,7 +361,15 @@ fn cutting_target_velocity_stops_motor_control_safely_until_it_is_restored() {
         &s.record().events().back().unwrap().kind,
         EventKind::ConnectionRestored { .. }
     ));
-    let running = |s: &System| matches!(s.wiring().motor_control().status(), MotorStatus::Running);
+    let running = |s: &System| {
+        matches!(
+            s.wiring()
+                .motor_control()
+                .expect("the built-in MotorControl")
+                .status(),
+            MotorStatus::Running
+        )
+    };
     assert!(
         s.run_until(0.1, running).unwrap(),
         "MotorControl runs again"

@@ -31,8 +31,8 @@ use crate::interfaces::{ControlPoints, Pose};
 use crate::map::{GridMap, MapUpdate};
 use crate::motion::{DrivePhase, PurePursuit, PursuitParams, free_travel};
 use crate::rtc::{
-    Component, Configuration, InPort, OutPort, PortView, ReturnCode, Tick, TimedDouble,
-    TimedPosition, TimedVelocity,
+    Component, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDouble, TimedPosition,
+    TimedVelocity,
 };
 
 /// How long without a new pose before DriveControl stops: 0.5 s (as MotorControl, spec §4).
@@ -379,15 +379,7 @@ fn check_position(msg: &TimedPosition) -> Result<Pose, MotionError> {
 impl Component for DriveControl {
     component_basics!(name: name, config: config);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![
-            self.in_control_points.view(),
-            self.in_current_position.view(),
-            self.target_velocity.view(),
-            self.out_deviating.view(),
-            self.safety_stop.view(),
-        ]
-    }
+    component_ports!(in: [in_control_points, in_current_position], out: [target_velocity, out_deviating, safety_stop]);
 
     /// Starts from standstill with the path it holds (a path that came on `InControlPoints`
     /// is the component's data: a Reset and an Activate resume it; a newer one waiting on the

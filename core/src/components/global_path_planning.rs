@@ -33,9 +33,7 @@ use crate::errors::GlobalPlanningError;
 use crate::global::{AStar, GridPlan, OctileCost};
 use crate::interfaces::{GlobalPathCourse, PlanningFailure, Pose};
 use crate::map::{Cell, GridMap, MapUpdate, escape_route};
-use crate::rtc::{
-    Component, Configuration, InPort, OutPort, PortView, ReturnCode, Tick, TimedPosition,
-};
+use crate::rtc::{Component, Configuration, InPort, OutPort, ReturnCode, Tick, TimedPosition};
 
 crate::define_parameters! {
     /// GlobalPathPlanning's configuration parameters (spec §5; `dmin` as in 000 §4.2). The
@@ -298,13 +296,7 @@ fn prepend(escape: &[Cell], plan: GridPlan) -> GridPlan {
 impl Component for GlobalPathPlanning {
     component_basics!(name: instance_name, config: config);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![
-            self.in_current_position.view(),
-            self.global_path_course.view(),
-            self.planning_failure.view(),
-        ]
-    }
+    component_ports!(in: [in_current_position], out: [global_path_course, planning_failure]);
 
     /// Reads the current position, replans when `dmin` changed, plans a pending request and
     /// sends the route or the failure.

@@ -21,8 +21,8 @@ use crate::errors::MotionError;
 use crate::interfaces::Pose;
 use crate::motion::{DiffDrive, Odometry, wrap_angle};
 use crate::rtc::{
-    Component, ComponentError, Configuration, InPort, OutPort, PortView, ReturnCode, Tick,
-    TimedDoubleSeq, TimedPosition,
+    Component, ComponentError, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDoubleSeq,
+    TimedPosition,
 };
 
 /// Where the published pose comes from (`LocalizationMode`).
@@ -213,13 +213,7 @@ impl Localization {
 impl Component for Localization {
     component_basics!(name: name, config: config);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![
-            self.in_simulated_position.view(),
-            self.in_current_wheel_angle.view(),
-            self.out_current_position.view(),
-        ]
-    }
+    component_ports!(in: [in_simulated_position, in_current_wheel_angle], out: [out_current_position]);
 
     /// Locks the odometry geometry and restarts odometry at the start pose.
     fn on_activated(&mut self, _tick: &Tick) -> ReturnCode {

@@ -15,7 +15,7 @@
 use std::rc::Rc;
 
 use crate::map::GridMap;
-use crate::rtc::{Component, OutPort, PortView, Time};
+use crate::rtc::{Component, OutPort, Time};
 
 /// What MapBuilder sends on `SetMap`: the whole map, shared (the consumers copy what they
 /// keep).
@@ -92,9 +92,7 @@ impl MapBuilder {
 impl Component for MapBuilder {
     component_basics!(name: name);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![self.set_map.view()]
-    }
+    component_ports!(in: [], out: [set_map]);
 }
 
 #[cfg(test)]

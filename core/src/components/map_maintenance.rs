@@ -15,7 +15,7 @@
 
 use crate::errors::SystemError;
 use crate::map::{GridMap, MapUpdate};
-use crate::rtc::{Component, OutPort, PortView};
+use crate::rtc::{Component, OutPort};
 
 /// The MapMaintenance RT-component.
 #[derive(Debug, Clone)]
@@ -79,9 +79,7 @@ impl MapMaintenance {
 impl Component for MapMaintenance {
     component_basics!(name: name);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![self.map_update_out.view()]
-    }
+    component_ports!(in: [], out: [map_update_out]);
 }
 
 #[cfg(test)]

@@ -34,6 +34,45 @@ macro_rules! component_basics {
     };
 }
 
+/// A component's data ports, in and out, each a field of the component: writes
+/// [`Component::ports`](crate::rtc::Component::ports) (the ins, then the outs, in the order
+/// given) and the lookups by port name the connections are made with
+/// ([`Component::in_port`](crate::rtc::Component::in_port),
+/// [`Component::out_port_mut`](crate::rtc::Component::out_port_mut)), and
+/// [`Component::disconnect_ports`](crate::rtc::Component::disconnect_ports).
+///
+/// ```text
+/// component_ports!(in: [in_control_points, in_current_position],
+///                  out: [target_velocity, out_deviating, safety_stop]);
+/// ```
+macro_rules! component_ports {
+    (in: [$($i:ident),* $(,)?], out: [$($o:ident),* $(,)?]) => {
+        fn ports(&self) -> Vec<$crate::rtc::PortView> {
+            vec![$(self.$i.view(),)* $(self.$o.view(),)*]
+        }
+
+        fn in_port(&self, name: &str) -> Option<&dyn core::any::Any> {
+            $(if self.$i.name() == name {
+                return Some(&self.$i);
+            })*
+            let _ = name;
+            None
+        }
+
+        fn out_port_mut(&mut self, name: &str) -> Option<&mut dyn core::any::Any> {
+            $(if self.$o.name() == name {
+                return Some(&mut self.$o);
+            })*
+            let _ = name;
+            None
+        }
+
+        fn disconnect_ports(&mut self) {
+            $(self.$o.disconnect_all();)*
+        }
+    };
+}
+
 mod drive_control;
 mod localization;
 mod motor_control;
@@ -43,6 +82,7 @@ pub use drive_control::{DriveControl, DriveControlParams, DriveStatus};
 pub use localization::{Localization, LocalizationMode, LocalizationParams};
 pub use motor_control::{
     GainWarning, INPUT_TIMEOUT_NS, MotorControl, MotorControlParams, MotorGeometry, MotorStatus,
+    default_geometry,
 };
 pub use physics_sim::{PhysicsSim, PhysicsSimParams};
 
@@ -57,6 +97,9 @@ pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams, Pla
 mod map_builder;
 mod map_maintenance;
 mod samples;
+mod script_component;
+
+pub use script_component::{ScriptComponent, ScriptPlace};
 
 pub use map_builder::{MapBuilder, SetMapMessage};
 pub use map_maintenance::MapMaintenance;

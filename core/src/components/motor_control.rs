@@ -22,8 +22,8 @@ use crate::interfaces::Pose;
 use crate::motion::{DiffDrive, ModelFrame};
 use crate::present::number;
 use crate::rtc::{
-    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
-    Tick, Time, TimedDoubleSeq, TimedVelocity,
+    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
+    Time, TimedDoubleSeq, TimedVelocity,
 };
 
 /// How long without a new target velocity (or new wheel angles) before the safe stop:
@@ -216,7 +216,8 @@ pub struct MotorGeometry {
 }
 
 impl MotorGeometry {
-    fn from_params(p: &MotorControlParams) -> Result<Self, MotionError> {
+    /// The geometry `p`'s `on_activation` parameters give; equal wheel ids are refused.
+    pub fn from_params(p: &MotorControlParams) -> Result<Self, MotionError> {
         if p.left_wheel_id == p.right_wheel_id {
             return Err(MotionError::SameWheelId {
                 id: p.left_wheel_id,
@@ -669,7 +670,8 @@ impl MotorControl {
     }
 }
 
-fn default_geometry() -> MotorGeometry {
+/// The geometry of the default parameters.
+pub fn default_geometry() -> MotorGeometry {
     let p = MotorControlParams::default();
     MotorGeometry {
         drive: DiffDrive::default(),
@@ -683,17 +685,7 @@ fn default_geometry() -> MotorGeometry {
 impl Component for MotorControl {
     component_basics!(name: name, config: config);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![
-            self.target_velocity.view(),
-            self.in_current_wheel_angle.view(),
-            self.in_simulated_position.view(),
-            self.torque.view(),
-            self.out_current_wheel_angle.view(),
-            self.out_simulated_position_to_invent_gui.view(),
-            self.out_simulated_position_to_localization.view(),
-        ]
-    }
+    component_ports!(in: [target_velocity, in_current_wheel_angle, in_simulated_position], out: [torque, out_current_wheel_angle, out_simulated_position_to_invent_gui, out_simulated_position_to_localization]);
 
     /// 002 §5.2.3: (1) every held value and flag off; (2) the `on_activation` parameters
     /// copied and locked; (3) stale data dropped from the in-ports. Equal wheel ids fail the

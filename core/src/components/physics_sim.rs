@@ -26,8 +26,8 @@ use crate::motion::{
     Physics, PhysicsParams, STEP_NS,
 };
 use crate::rtc::{
-    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
-    Tick, Time, TimedDoubleSeq,
+    Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, ReturnCode, Tick,
+    Time, TimedDoubleSeq,
 };
 
 define_parameters! {
@@ -261,14 +261,7 @@ impl PhysicsSim {
 impl Component for PhysicsSim {
     component_basics!(name: name, config: config);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![
-            self.torque.view(),
-            self.angle.view(),
-            self.position.view(),
-            self.bump.view(),
-        ]
-    }
+    component_ports!(in: [torque], out: [angle, position, bump]);
 
     /// Checks the period and starts the simulated clock at the activation time.
     fn on_activated(&mut self, tick: &Tick) -> ReturnCode {

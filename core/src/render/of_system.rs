@@ -64,7 +64,7 @@ impl FieldBuffers {
 /// was placed.
 pub fn ghost_of(system: &System) -> Option<Ghost<'_>> {
     let wiring = system.wiring();
-    let geometry = wiring.motor_control().geometry();
+    let geometry = wiring.motor_geometry();
     let physics = wiring.physics().physics();
     let placed = system.mission().start().is_some() || system.is_driving();
     placed.then(|| Ghost {
@@ -127,7 +127,7 @@ pub(super) fn scene_with<'a>(
         let (x, y) = map.cell_center(t.cell);
         Pose::new(x, y, t.heading)
     });
-    let geometry = wiring.motor_control().geometry();
+    let geometry = wiring.motor_geometry();
     let physics = wiring.physics().physics();
     let robot = RobotView {
         pose: physics.pose(),

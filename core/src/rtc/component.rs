@@ -51,7 +51,7 @@ pub type ReturnCode = Result<(), ComponentError>;
 ///
 /// Time is simulated: integer nanoseconds since the context was created, advanced only by
 /// ticks (spec §6). No component reads a clock.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Tick {
     /// Simulated time of this tick in nanoseconds.
     pub time_ns: u64,
@@ -111,6 +111,29 @@ pub trait Component: Any {
     /// the component; the system's description, `crate::system::SystemGraph`).
     fn ports(&self) -> Vec<PortView> {
         Vec::new()
+    }
+
+    /// Its in-port named `name` (an [`InPort<T>`](super::InPort) of the port's IDL type), for
+    /// whoever connects an out-port to it: connections are made by port name, so whatever
+    /// component stands in a place of the system (a built-in one or a student's script, spec
+    /// §8) is connected the same way.
+    fn in_port(&self, _name: &str) -> Option<&dyn Any> {
+        None
+    }
+
+    /// Its out-port named `name` (an [`OutPort<T>`](super::OutPort)), to connect it.
+    fn out_port_mut(&mut self, _name: &str) -> Option<&mut dyn Any> {
+        None
+    }
+
+    /// Drops the connections of every out-port (the component at the other end is being
+    /// replaced; the system connects them again).
+    fn disconnect_ports(&mut self) {}
+
+    /// The name of the student's script this component runs, if it is one (spec §8: the
+    /// System tab and the component's card say so); `None` for a built-in component.
+    fn script_name(&self) -> Option<&str> {
+        None
     }
 
     /// Once, when the component is created.

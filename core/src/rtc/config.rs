@@ -353,6 +353,8 @@ impl<P: ParameterSet> Configuration<P> {
 /// Object-safe access to any component's configuration, for the execution context, the GUI
 /// and `.conf` files.
 pub trait ConfigAccess {
+    /// A copy to try changes on (all of them are checked before any is made).
+    fn boxed_copy(&self) -> Box<dyn ConfigAccess>;
     /// The parameter declarations.
     fn specs(&self) -> &'static [ParamSpec];
     /// The requested value of `name`.
@@ -392,6 +394,10 @@ pub trait ConfigAccess {
 }
 
 impl<P: ParameterSet> ConfigAccess for Configuration<P> {
+    fn boxed_copy(&self) -> Box<dyn ConfigAccess> {
+        Box::new(self.clone())
+    }
+
     fn specs(&self) -> &'static [ParamSpec] {
         P::SPECS
     }

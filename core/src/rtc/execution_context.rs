@@ -287,6 +287,12 @@ impl ExecutionContext {
         &self.events
     }
 
+    /// The tick component `id` would be handed now (its period, the current time).
+    pub fn tick_now(&self, id: ComponentId) -> Result<Tick, LifecycleError> {
+        self.slot(id)?;
+        Ok(self.tick_for(id))
+    }
+
     fn tick_for(&self, id: ComponentId) -> Tick {
         Tick {
             time_ns: self.time_ns(),
@@ -457,6 +463,46 @@ impl ExecutionContext {
         self.slots[id].state = Finalized;
         self.record(id, from, "on_finalize", r.err().map(|e| *e.reason));
         Ok(Finalized)
+    }
+
+    /// Puts `component` in the place of component `id` (spec §8: a student's script in the
+    /// place of a built-in component, or the built-in one back), as if the old one were
+    /// finalized and the new one created there: the new one's `on_initialize` runs first,
+    /// and if it fails nothing changes (the error names it); then the old one's
+    /// `on_finalize`, and the new one is Inactive (then `on_startup` if the context is
+    /// Running), with no fault pending and no error kept. Refused while the component is
+    /// Active. Returns the old component (its ports still connected: the owner reconnects).
+    pub fn replace(
+        &mut self,
+        id: ComponentId,
+        mut component: Box<dyn Component>,
+    ) -> Result<Box<dyn Component>, LifecycleError> {
+        use LifecycleState::*;
+        self.check(id, Request::Replace, &[Created, Inactive, Error], false)?;
+        if let Err(e) = component.on_initialize() {
+            return Err(LifecycleError::CallbackFailed {
+                component: component.instance_name().to_owned(),
+                callback: "on_initialize",
+                reason: e.to_string(),
+            });
+        }
+        let from = self.slots[id].state;
+        let slot = &mut self.slots[id];
+        let mut old = core::mem::replace(&mut slot.component, component);
+        slot.state = Inactive;
+        slot.fault = None;
+        slot.injections.clear();
+        slot.last_error = None;
+        if let Err(e) = old.on_finalize() {
+            // Said in the events; not kept as the new component's error.
+            self.record(id, from, "on_finalize", Some(*e.reason));
+            self.slots[id].last_error = None;
+        }
+        self.record(id, from, "on_initialize", None);
+        if self.state == ContextState::Running {
+            self.start_or_stop(id, ContextState::Running);
+        }
+        Ok(old)
     }
 
     /// Changes a component's rate; `on_rate_changed` runs if the context is Running and the

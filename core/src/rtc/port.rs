@@ -219,6 +219,12 @@ impl<T: Clone> OutPort<T> {
         gate
     }
 
+    /// Drops every connection (the component at the other end is being replaced; the owner
+    /// connects the port again).
+    pub fn disconnect_all(&mut self) {
+        self.connections.clear();
+    }
+
     /// Number of connected InPorts.
     pub fn connection_count(&self) -> usize {
         self.connections.len()

@@ -88,6 +88,9 @@ pub enum Request {
     ChangeRate,
     /// Make the next `on_execute` fail (a teaching aid).
     InjectFault,
+    /// Put another component in its place: a student's script, or the built-in one back
+    /// (spec §8).
+    Replace,
 }
 
 impl fmt::Display for Request {
@@ -100,6 +103,7 @@ impl fmt::Display for Request {
             Self::Finalize => "finalize",
             Self::ChangeRate => "change the rate",
             Self::InjectFault => "inject a fault",
+            Self::Replace => "replace it",
         })
     }
 }

@@ -84,7 +84,7 @@ pub use runs::scenario::{
     BoxSpec, DirectionSpec, Expectation, FileResolver, MapSource, MemoryResolver, OutcomeKind,
     PoseSpec, Scenario, ScenarioEvent, UnknownSpec,
 };
-pub use runs::setup::{self, BuildOptions, Setup};
+pub use runs::setup::{self, BuildOptions, ScriptText, Setup};
 pub use runs::timeline::Timeline;
 pub use sessions::history::{MAX_CHECKPOINTS, Mark, MarkKind, TimelineView};
 pub use sessions::picked_files::{PickError, PickedFiles};
@@ -113,7 +113,7 @@ pub use simulation::rest::{
 pub use simulation::robot::System;
 pub use simulation::status::{ComponentInfo, Status, SystemState};
 pub use simulation::telemetry::{DEFAULT_TELEMETRY_CAPACITY, Telemetry, TelemetrySample};
-pub use simulation::wiring::{Report, Wiring};
+pub use simulation::wiring::{MotorReadings, Report, Wiring};
 pub use vocabulary::error::{ConfBundleError, ScenarioError, SessionError, SystemError};
 pub use vocabulary::events::{EventKind, SystemEvent};
 pub use vocabulary::input::{Input, InputSummary, RequestSource};

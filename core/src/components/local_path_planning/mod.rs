@@ -66,8 +66,7 @@ use crate::local::{
 };
 use crate::map::{Cell, GridMap, MapUpdate};
 use crate::rtc::{
-    Component, Configuration, InPort, OutPort, PortView, ReturnCode, Tick, TimedDouble,
-    TimedPosition,
+    Component, Configuration, InPort, OutPort, ReturnCode, Tick, TimedDouble, TimedPosition,
 };
 
 /// After a failed plan, how long until the next attempt \[ns\] (spec §3 Decision 0.2).
@@ -689,16 +688,7 @@ fn plan_params(params: &LocalPathPlanningParams) -> PlanParams {
 impl Component for LocalPathPlanning {
     component_basics!(name: name, config: config);
 
-    fn ports(&self) -> Vec<PortView> {
-        vec![
-            self.in_current_position.view(),
-            self.in_deviating.view(),
-            self.invent_gui_cons.view(),
-            self.bump_cons.view(),
-            self.drive_cons.view(),
-            self.invent_gui_failure.view(),
-        ]
-    }
+    component_ports!(in: [in_current_position, in_deviating], out: [invent_gui_cons, bump_cons, drive_cons, invent_gui_failure]);
 
     /// 000 §5.2.3: initialisation. Stale port data is dropped. Spec §3 Decision 0.2: what
     /// the services delivered (map, start/goal, held path) is kept — it is the service

@@ -368,7 +368,7 @@ impl ScenarioRun {
             replans: stats.local_plans,
             global_plans: stats.global_plans,
             min_clearance: stats.min_clearance,
-            body_radius: s.wiring().motor_control().geometry().radius_of_body_area,
+            body_radius: s.wiring().motor_geometry().radius_of_body_area,
             bumps: stats.bumps,
             planning_failures: stats.planning_failures,
             final_pose: pose,
@@ -444,7 +444,11 @@ pub fn judge(
     let now = system.time_ns();
     let wiring = system.wiring();
     let resting = Measured::of(wiring).at_rest();
-    let idle = matches!(wiring.drive_control().pursuit().phase(), DrivePhase::Idle);
+    // A script in DriveControl's place has no phase: it is idle while it commands nothing.
+    let idle = match wiring.drive_phase() {
+        Some(phase) => phase == DrivePhase::Idle,
+        None => wiring.drive_command() == (0.0, 0.0),
+    };
     let failure = system.mission().failure().or(refused.as_ref()).cloned();
     let off_goal = match system.status() {
         s @ Status::StoppedOffGoal { .. } => Some(s),

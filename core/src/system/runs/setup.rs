@@ -3,7 +3,8 @@
 //! tests all build through [`build`], so they start from the same state bit for bit.
 //!
 //! A set-up is built as an operator would: the system at the scenario's rates, its
-//! configuration, its map, the set-up's parameter changes and map edits, start and goal
+//! configuration, its map, the set-up's parameter changes, students' scripts and map edits,
+//! start and goal
 //! (`SetPosition`), then the planning components (MapBuilder, MapMaintenance,
 //! GlobalPathPlanning, LocalPathPlanning) activated and run until they have planned — at most
 //! [`PLAN_SECONDS`] of simulated time. The robot's own components stay Inactive: the drive
@@ -44,6 +45,20 @@ pub struct Setup {
     pub edits: Vec<(i64, i64, i16)>,
     /// Parameters that differ from the scenario's: component → name → value.
     pub params: BTreeMap<String, BTreeMap<String, f64>>,
+    /// Students' scripts in components' places (spec §8): component → the script. Loaded
+    /// after the parameters, so a script starts with the values they give.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub scripts: BTreeMap<String, ScriptText>,
+}
+
+/// A student's script as a set-up (and a replay, and a hand-in) carries it.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScriptText {
+    /// Its name (a file name).
+    pub name: String,
+    /// Its text.
+    pub source: String,
 }
 
 impl Setup {
@@ -57,6 +72,7 @@ impl Setup {
             backward: scenario.direction.direction() == Direction::Backward,
             edits: Vec::new(),
             params: BTreeMap::new(),
+            scripts: BTreeMap::new(),
         }
     }
 }
@@ -113,6 +129,17 @@ pub fn build(
         system
             .apply(&input)
             .map_err(|e| fail("set-up parameters", e))?;
+    }
+    for (component, script) in &setup.scripts {
+        let component =
+            ComponentKind::from_name(component).map_err(|e| fail("scripts", e.into()))?;
+        system
+            .apply(&Input::LoadScript {
+                component,
+                name: script.name.clone(),
+                source: script.source.clone(),
+            })
+            .map_err(|e| fail(&format!("the script {}", script.name), e))?;
     }
     if !setup.edits.is_empty() {
         system

@@ -153,7 +153,9 @@ fn numbers_mut(input: &mut Input) -> Vec<&mut f64> {
         | Input::InjectFault { .. }
         | Input::LoadConf { .. }
         | Input::CutConnection { .. }
-        | Input::RestoreConnection { .. } => Vec::new(),
+        | Input::RestoreConnection { .. }
+        | Input::LoadScript { .. }
+        | Input::UseBuiltIn { .. } => Vec::new(),
     }
 }
 
@@ -352,6 +354,7 @@ mod tests {
             backward: false,
             edits: vec![(1, 2, 1)],
             params: BTreeMap::new(),
+            scripts: BTreeMap::new(),
         };
         let inputs = vec![
             TimedInput {

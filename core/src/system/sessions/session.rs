@@ -39,7 +39,9 @@ use crate::rtc::LifecycleState;
 use crate::system::runs::exercise::{ExerciseStatus, parameter_values};
 use crate::system::runs::exercise_watch::ExerciseWatch;
 use crate::system::runs::scenario::{FileResolver, MapSource, MemoryResolver, Scenario};
-use crate::system::runs::setup::{self, BuildOptions, PLAN_SECONDS, SETUP_VERSION, Setup};
+use crate::system::runs::setup::{
+    self, BuildOptions, PLAN_SECONDS, SETUP_VERSION, ScriptText, Setup,
+};
 use crate::system::runs::timeline::Timeline;
 use crate::system::simulation::conf_bundle::unknown_parameter;
 use crate::system::simulation::parameter_warning::ParameterWarning;
@@ -421,6 +423,7 @@ impl Session {
                 .map(|(&(x, y), &v)| (x, y, v))
                 .collect(),
             params,
+            scripts: scripts_of(&self.state.system),
         })
     }
 
@@ -696,4 +699,21 @@ impl Session {
             .collect();
         w
     }
+}
+
+/// The students' scripts in the system's places, as a set-up carries them.
+fn scripts_of(system: &System) -> BTreeMap<String, ScriptText> {
+    ComponentKind::ALL
+        .into_iter()
+        .filter_map(|kind| {
+            let program = system.wiring().script(kind)?.program();
+            Some((
+                kind.name().to_owned(),
+                ScriptText {
+                    name: program.name().to_owned(),
+                    source: program.source().to_owned(),
+                },
+            ))
+        })
+        .collect()
 }

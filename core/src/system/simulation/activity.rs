@@ -40,6 +40,14 @@ pub enum ComponentActivity {
     },
     /// Not Active: MotorControl and DriveControl do nothing.
     Inactive,
+    /// A student's script stands in the component's place (spec §8): what it does is the
+    /// script's, and its console says it.
+    Script {
+        /// The script's name (a file name).
+        script: String,
+        /// Whether it is Active (its actions run every period).
+        active: bool,
+    },
     /// MapBuilder holds a map.
     Map {
         /// Cells in x.
@@ -182,6 +190,12 @@ impl ComponentActivity {
             };
         }
         let active = state == LifecycleState::Active;
+        if let Some(script) = w.script(kind) {
+            return Self::Script {
+                script: script.program().name().to_owned(),
+                active,
+            };
+        }
         match kind {
             ComponentKind::MapBuilder => match w.map_builder().map() {
                 Some(m) => Self::Map {
@@ -202,26 +216,29 @@ impl ComponentActivity {
                 }
             }
             ComponentKind::MotorControl if !active => Self::Inactive,
-            ComponentKind::MotorControl => match w.motor_control().status() {
-                MotorStatus::Inactive => Self::Inactive,
-                MotorStatus::WaitingForInput {
-                    wheel_angle,
-                    target_velocity,
-                } => Self::WaitingFor {
-                    inputs: [
-                        (!wheel_angle, "InCurrentWheelAngle"),
-                        (!target_velocity, "TargetVelocity"),
-                    ]
-                    .into_iter()
-                    .filter_map(|(missing, port)| missing.then_some(port))
-                    .collect(),
-                },
-                MotorStatus::Running => Self::Running,
-                MotorStatus::Stopped => Self::Stopped,
-                MotorStatus::Finished => Self::Finished,
-                MotorStatus::SafeStop(e) => Self::SafeStop {
-                    output: ZeroOutput::Torque,
-                    reason: Reason::Error(e.clone().into()),
+            ComponentKind::MotorControl => match w.motor_control().map(|m| m.status()) {
+                None => Self::Inactive,
+                Some(status) => match status {
+                    MotorStatus::Inactive => Self::Inactive,
+                    MotorStatus::WaitingForInput {
+                        wheel_angle,
+                        target_velocity,
+                    } => Self::WaitingFor {
+                        inputs: [
+                            (!wheel_angle, "InCurrentWheelAngle"),
+                            (!target_velocity, "TargetVelocity"),
+                        ]
+                        .into_iter()
+                        .filter_map(|(missing, port)| missing.then_some(port))
+                        .collect(),
+                    },
+                    MotorStatus::Running => Self::Running,
+                    MotorStatus::Stopped => Self::Stopped,
+                    MotorStatus::Finished => Self::Finished,
+                    MotorStatus::SafeStop(e) => Self::SafeStop {
+                        output: ZeroOutput::Torque,
+                        reason: Reason::Error(e.clone().into()),
+                    },
                 },
             },
             ComponentKind::Localization => Self::Localizing {
@@ -258,19 +275,22 @@ impl ComponentActivity {
                 }
             }
             ComponentKind::DriveControl if !active => Self::Inactive,
-            ComponentKind::DriveControl => match w.drive_control().status() {
-                DriveStatus::Inactive => Self::Inactive,
-                DriveStatus::WaitingForPose => Self::WaitingForPose,
-                DriveStatus::Driving(DrivePhase::Idle) => Self::Idle,
-                DriveStatus::Driving(DrivePhase::TurnInPlace) => Self::TurningOnTheSpot,
-                DriveStatus::Driving(DrivePhase::Following) => Self::FollowingPath,
-                DriveStatus::Driving(DrivePhase::FinalTurn) => Self::TurningToGoalHeading,
-                DriveStatus::Driving(DrivePhase::Arrived) => Self::Arrived,
-                DriveStatus::SafeStop(e) => Self::SafeStop {
-                    output: ZeroOutput::Velocity,
-                    reason: Reason::Error(e.clone().into()),
+            ComponentKind::DriveControl => match w.drive_control().map(|d| d.status()) {
+                None => Self::Inactive,
+                Some(status) => match status {
+                    DriveStatus::Inactive => Self::Inactive,
+                    DriveStatus::WaitingForPose => Self::WaitingForPose,
+                    DriveStatus::Driving(DrivePhase::Idle) => Self::Idle,
+                    DriveStatus::Driving(DrivePhase::TurnInPlace) => Self::TurningOnTheSpot,
+                    DriveStatus::Driving(DrivePhase::Following) => Self::FollowingPath,
+                    DriveStatus::Driving(DrivePhase::FinalTurn) => Self::TurningToGoalHeading,
+                    DriveStatus::Driving(DrivePhase::Arrived) => Self::Arrived,
+                    DriveStatus::SafeStop(e) => Self::SafeStop {
+                        output: ZeroOutput::Velocity,
+                        reason: Reason::Error(e.clone().into()),
+                    },
+                    DriveStatus::SafetyStop { ahead } => Self::SafetyStop { ahead: *ahead },
                 },
-                DriveStatus::SafetyStop { ahead } => Self::SafetyStop { ahead: *ahead },
             },
         }
     }
@@ -293,6 +313,11 @@ impl fmt::Display for ComponentActivity {
                 reason: Some(reason),
             } => write!(f, "in Error, not executing: {reason}"),
             Self::Inactive => f.write_str("inactive"),
+            Self::Script { script, active } => write!(
+                f,
+                "runs the student's script `{script}`{}",
+                if *active { "" } else { " (inactive)" }
+            ),
             Self::Map {
                 width,
                 height,
@@ -391,6 +416,10 @@ pub(crate) mod tests {
                 reason: Some(error()),
             },
             A::Inactive,
+            A::Script {
+                script: "pd.rhai".into(),
+                active: true,
+            },
             A::Map {
                 width: 200,
                 height: 100,

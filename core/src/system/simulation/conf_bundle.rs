@@ -37,7 +37,7 @@
 //! marker, an unknown key, a value that is not a number or out of range.
 
 use crate::errors::{ConfBundleError, ConfigError, SystemError};
-use crate::rtc::{ConfFile, ConfKey, ConfigAccess, Configuration, ParameterSet, without_bom};
+use crate::rtc::{ConfFile, ConfKey, ConfigAccess, without_bom};
 
 use super::wiring::Wiring;
 use crate::system::vocabulary::events::EventKind;
@@ -69,11 +69,8 @@ struct Block {
 
 /// Loads `conf` into a clone of `config`: whether the block applies, nothing changed.
 /// `conf` applied to a copy of `config`: the `dmin` it would leave, if the component has one.
-fn trial<P: ParameterSet>(
-    config: &Configuration<P>,
-    conf: &ConfFile,
-) -> Result<Option<f64>, ConfigError> {
-    let mut copy = config.clone();
+fn trial(config: &dyn ConfigAccess, conf: &ConfFile) -> Result<Option<f64>, ConfigError> {
+    let mut copy = config.boxed_copy();
     copy.load_conf(conf)?;
     Ok(copy.value(DMIN).ok())
 }
@@ -209,20 +206,8 @@ impl Wiring {
         let blocks = self.split_conf(text)?;
         let mut dmins: Vec<(ComponentKind, f64)> = Vec::new();
         for block in &blocks {
-            let checked = match block.kind {
-                ComponentKind::PhysicsSim => trial(self.physics().config(), &block.conf),
-                ComponentKind::MotorControl => trial(self.motor_control().config(), &block.conf),
-                ComponentKind::Localization => trial(self.localization().config(), &block.conf),
-                ComponentKind::GlobalPathPlanning => {
-                    trial(self.global_path_planning().config(), &block.conf)
-                }
-                ComponentKind::LocalPathPlanning => {
-                    trial(self.local_path_planning().config(), &block.conf)
-                }
-                ComponentKind::DriveControl => trial(self.drive_control().config(), &block.conf),
-                // `split_conf` keeps only components with parameters.
-                ComponentKind::MapBuilder | ComponentKind::MapMaintenance => Ok(None),
-            };
+            // `split_conf` keeps only components with parameters.
+            let checked = trial(self.config(block.kind)?, &block.conf);
             if let Some(dmin) = checked.map_err(|e| block.error(e))? {
                 dmins.push((block.kind, dmin));
             }

@@ -118,10 +118,11 @@ impl Mission {
             return;
         };
         if wiring.runs_at(ComponentKind::DriveControl, index) {
-            let at_goal = matches!(
-                wiring.drive_control().pursuit().phase(),
-                DrivePhase::FinalTurn | DrivePhase::Arrived
-            );
+            let at_goal = match wiring.drive_phase() {
+                Some(phase) => matches!(phase, DrivePhase::FinalTurn | DrivePhase::Arrived),
+                // A script in DriveControl's place: at the goal once it commands nothing.
+                None => wiring.drive_command() == (0.0, 0.0),
+            };
             if at_goal
                 && self.approach_heading_error.is_none()
                 && let Some(g) = self.goal
@@ -221,18 +222,22 @@ impl Mission {
     }
 }
 
-/// Whether DriveControl has finished a path that ends at `goal`: its phase is `Arrived`
-/// and its path's last point is the goal (not a path to an earlier goal).
+/// Whether DriveControl has finished a path that ends at `goal`: its phase is `Arrived` (a
+/// script in its place: it commands nothing) and its path's last point is the goal (not a
+/// path to an earlier goal).
 fn drive_done_for(wiring: &Wiring, goal: Pose) -> bool {
-    wiring.drive_control().pursuit().phase() == DrivePhase::Arrived && path_ends_at(wiring, goal)
+    let done = match wiring.drive_phase() {
+        Some(phase) => phase == DrivePhase::Arrived,
+        // A script in DriveControl's place has no phase: it is done once it commands nothing
+        // (the arrival itself is the system's fact: at rest, within the tolerances).
+        None => wiring.drive_command() == (0.0, 0.0),
+    };
+    done && path_ends_at(wiring, goal)
 }
 
 /// Whether DriveControl's path ends at `goal` (the control points' last is the goal, exact).
 fn path_ends_at(wiring: &Wiring, goal: Pose) -> bool {
     wiring
-        .drive_control()
-        .pursuit()
-        .polyline()
-        .and_then(|l| l.points().last().copied())
+        .drive_path_end()
         .is_some_and(|(x, y)| libm::hypot(x - goal.x, y - goal.y) <= 1e-9)
 }

@@ -82,12 +82,11 @@ impl ParameterWarning {
                 let dt = ec.period_of(kind.index()).map_or(f64::NAN, |ticks| {
                     (ticks * ec.base_period_ns()) as f64 * 1e-9
                 });
-                let p = wiring.motor_control().config().params();
-                let (pg, dg) = if name.ends_with('L') {
-                    (p.p_gain_l, p.d_gain_l)
-                } else {
-                    (p.p_gain_r, p.d_gain_r)
-                };
+                // By name: the same parameters whoever stands in MotorControl's place.
+                let config = wiring.config(kind).ok()?;
+                let side = if name.ends_with('L') { 'L' } else { 'R' };
+                let pg = config.effective_value(&format!("PGain{side}")).ok()?;
+                let dg = config.effective_value(&format!("DGain{side}")).ok()?;
                 match GainWarning::check(pg, dg, dt)? {
                     w @ GainWarning::Unstable { .. } if name.starts_with('P') => Some(w),
                     w @ GainWarning::Limp { .. } if name.starts_with('D') => Some(w),

@@ -90,7 +90,7 @@ impl Motion {
 
 /// Whether DriveControl commands motion: it is Active and its last command is not zero.
 pub fn commanded(wiring: &Wiring) -> bool {
-    let (v, w) = wiring.drive_control().pursuit().last_command();
+    let (v, w) = wiring.drive_command();
     wiring.component_state(ComponentKind::DriveControl) == LifecycleState::Active
         && (v != 0.0 || w != 0.0)
 }
@@ -101,7 +101,10 @@ fn driven(wiring: &Wiring) -> bool {
     let active = |k: ComponentKind| wiring.component_state(k) == LifecycleState::Active;
     active(ComponentKind::PhysicsSim)
         && active(ComponentKind::MotorControl)
-        && *wiring.motor_control().status() == MotorStatus::Running
+        // A script in MotorControl's place runs while it is Active.
+        && wiring
+            .motor_control()
+            .is_none_or(|m| *m.status() == MotorStatus::Running)
         && commanded(wiring)
 }
 

@@ -190,6 +190,14 @@ impl System {
             },
             Input::CutConnection { connection } => w.set_connection_cut(connection, true),
             Input::RestoreConnection { connection } => w.set_connection_cut(connection, false),
+            Input::LoadScript {
+                component,
+                name,
+                source,
+            } => crate::script::Program::compile(name, source)
+                .map_err(crate::Error::from)
+                .and_then(|program| w.load_script(*component, program)),
+            Input::UseBuiltIn { component } => w.use_built_in(*component),
         };
         self.settle();
         result

@@ -271,23 +271,22 @@ impl Status {
                 motion,
             };
         }
-        if let MotorStatus::SafeStop(e) = w.motor_control().status() {
+        if let Some(MotorStatus::SafeStop(e)) = w.motor_control().map(|m| m.status()) {
             return Self::SafeStop {
                 component: ComponentKind::MotorControl.instance_name().to_owned(),
                 reason: Reason::Error(e.clone().into()),
                 motion,
             };
         }
-        let drive = w.drive_control();
-        match drive.status() {
-            DriveStatus::SafeStop(e) => {
+        match w.drive_control().map(|d| d.status()) {
+            Some(DriveStatus::SafeStop(e)) => {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
                     reason: Reason::Error(e.clone().into()),
                     motion,
                 };
             }
-            DriveStatus::SafetyStop { ahead } => {
+            Some(DriveStatus::SafetyStop { ahead }) => {
                 return Self::SafeStop {
                     component: ComponentKind::DriveControl.instance_name().to_owned(),
                     reason: Reason::ObstacleAhead { ahead: *ahead },
@@ -296,7 +295,7 @@ impl Status {
             }
             _ => {}
         }
-        let (v_cmd, w_cmd) = drive.pursuit().last_command();
+        let (v_cmd, w_cmd) = w.drive_command();
         let Measured { v, w: om } = Measured::of(w);
         if motion.moves() && ((v - v_cmd).abs() > 0.25 || (om - w_cmd).abs() > 1.0) {
             return Self::OffCommand {
@@ -315,7 +314,7 @@ impl Status {
                 None => Self::Standing,
             },
             Motion::Coasts => Self::Coasting { v, w: om },
-            Motion::Turns if drive.pursuit().phase() == DrivePhase::FinalTurn => {
+            Motion::Turns if w.drive_phase() == Some(DrivePhase::FinalTurn) => {
                 Self::TurningToGoalHeading
             }
             Motion::Turns => Self::TurningOnTheSpot,

@@ -25,7 +25,8 @@ pub struct TelemetrySample {
     pub wheel_angle: [f64; 2],
     /// Wheel rates `[left, right]` \[rad/s\] (the physics).
     pub wheel_rate: [f64; 2],
-    /// MotorControl's target wheel angles (002 §5.2.5.4) \[rad\].
+    /// MotorControl's target wheel angles (002 §5.2.5.4) \[rad\]; a script in its place
+    /// gives the `target_wheel_angle` pair it keeps in its state, NaN where it keeps none.
     pub target_wheel_angle: [f64; 2],
     /// MotorControl's target wheel rates (002 §5.2.5.4) \[rad/s\].
     pub target_wheel_rate: [f64; 2],
@@ -52,9 +53,8 @@ impl TelemetrySample {
     pub fn of(wiring: &Wiring, time_ns: u64) -> Self {
         let physics = wiring.physics().physics();
         let state = physics.state();
-        let motor = wiring.motor_control();
-        let drive = wiring.drive_control();
-        let (v_cmd, w_cmd) = drive.pursuit().last_command();
+        let motor = wiring.motor_readings();
+        let (v_cmd, w_cmd) = wiring.drive_command();
         let (v, w) = physics.body_velocity();
         Self {
             time_ns,
@@ -62,15 +62,15 @@ impl TelemetrySample {
             estimate: wiring.localization().current_pose(),
             wheel_angle: state.wheel_angle,
             wheel_rate: state.wheel_rate,
-            target_wheel_angle: motor.target_wheel_angles(),
-            target_wheel_rate: motor.target_wheel_rates(),
-            torque: motor.last_torque(),
+            target_wheel_angle: motor.target_wheel_angle,
+            target_wheel_rate: motor.target_wheel_rate,
+            torque: motor.torque,
             applied_torque: state.torque,
             v_cmd,
             w_cmd,
             v,
             w,
-            deviation: drive.deviation().unwrap_or(f64::NAN),
+            deviation: wiring.drive_deviation().unwrap_or(f64::NAN),
         }
     }
 

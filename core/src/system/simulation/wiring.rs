@@ -10,18 +10,21 @@ use core::fmt;
 
 use crate::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
-    MotorControl, PhysicsSim, SetMapMessage,
+    MotorControl, MotorGeometry, PhysicsSim, ScriptComponent, ScriptPlace, SetMapMessage,
+    default_geometry,
 };
 use crate::errors::{LifecycleError, SystemError};
 use crate::interfaces::{Direction, GlobalPathCourse, GridPath, PlanningFailure, Pose};
 use crate::local::FieldExtent;
 use crate::map::{GridMap, MapUpdate};
+use crate::motion::DrivePhase;
 use crate::motion::{BumpReport, ModelFrame, PhysicsParams};
 use crate::reason::Reason;
 use crate::rtc::{
     Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, Time,
     TimedDouble, TimedDoubleSeq,
 };
+use crate::script::Program;
 use crate::system::vocabulary::events::EventKind;
 use crate::system::vocabulary::kind::ComponentKind;
 use crate::system::vocabulary::rates::Rates;
@@ -155,7 +158,7 @@ impl Wiring {
             facts: Vec::new(),
             clearance_checked: None,
         };
-        wiring.connect();
+        wiring.connect()?;
         wiring.drain_lifecycle_events();
         wiring.tell_body_radius();
         Ok(wiring)
@@ -163,6 +166,12 @@ impl Wiring {
 
     // ------------------------------------------------------------------ components
 
+    /// The component in `kind`'s place as its type. Only DriveControl's and MotorControl's
+    /// places can hold another type (a student's script, spec §8: [`Wiring::load_script`]
+    /// refuses every other place), and the system reaches those two only through
+    /// [`Wiring::drive_control`], [`Wiring::motor_control`] and [`Wiring::script`], which
+    /// say `None` for the other type; so for the places this is asked of, `Wiring::new`'s
+    /// attachment decides the type for good.
     pub(in crate::system) fn get<T: Component>(&self, kind: ComponentKind) -> &T {
         match self.ec.component::<T>(kind.index()) {
             Some(c) => c,
@@ -170,6 +179,7 @@ impl Wiring {
         }
     }
 
+    /// [`Wiring::get`], mutably (for a service call).
     pub(in crate::system) fn get_mut<T: Component>(&mut self, kind: ComponentKind) -> &mut T {
         match self.ec.component_mut::<T>(kind.index()) {
             Some(c) => c,
@@ -189,9 +199,10 @@ impl Wiring {
     pub fn physics(&self) -> &PhysicsSim {
         self.get(ComponentKind::PhysicsSim)
     }
-    /// MotorControl.
-    pub fn motor_control(&self) -> &MotorControl {
-        self.get(ComponentKind::MotorControl)
+    /// The built-in MotorControl, while it is in its place (`None` while a script is).
+    pub fn motor_control(&self) -> Option<&MotorControl> {
+        self.ec
+            .component::<MotorControl>(ComponentKind::MotorControl.index())
     }
     /// Localization.
     pub fn localization(&self) -> &Localization {
@@ -205,9 +216,107 @@ impl Wiring {
     pub fn local_path_planning(&self) -> &LocalPathPlanning {
         self.get(ComponentKind::LocalPathPlanning)
     }
-    /// DriveControl.
-    pub fn drive_control(&self) -> &DriveControl {
-        self.get(ComponentKind::DriveControl)
+    /// The built-in DriveControl, while it is in its place (`None` while a script is).
+    pub fn drive_control(&self) -> Option<&DriveControl> {
+        self.ec
+            .component::<DriveControl>(ComponentKind::DriveControl.index())
+    }
+
+    /// The student's script in `kind`'s place, if one is there (spec §8).
+    pub fn script(&self, kind: ComponentKind) -> Option<&ScriptComponent> {
+        self.ec.component::<ScriptComponent>(kind.index())
+    }
+
+    /// The robot model's geometry: MotorControl's `on_activation` parameters as locked at its
+    /// last activation (002 §5.2.3 (2)); for a script in MotorControl's place, its effective
+    /// parameters (the defaults' geometry where they are not usable, e.g. equal wheel ids).
+    pub fn motor_geometry(&self) -> MotorGeometry {
+        if let Some(m) = self.motor_control() {
+            return *m.geometry();
+        }
+        self.script(ComponentKind::MotorControl)
+            .and_then(ScriptComponent::motor_params)
+            .and_then(|p| MotorGeometry::from_params(p).ok())
+            .unwrap_or_else(default_geometry)
+    }
+
+    /// What MotorControl computed last (002 §5.2.5.4–5): the built-in's target wheel angles
+    /// and rates and its torques; for a script in its place, the `target_wheel_angle` and
+    /// `target_wheel_rate` pairs it keeps in its state (NaN where it keeps none) and the
+    /// last `Torque` it wrote, at the wheel ids.
+    pub fn motor_readings(&self) -> MotorReadings {
+        if let Some(m) = self.motor_control() {
+            return MotorReadings {
+                target_wheel_angle: m.target_wheel_angles(),
+                target_wheel_rate: m.target_wheel_rates(),
+                torque: m.last_torque(),
+            };
+        }
+        let script = self.script(ComponentKind::MotorControl);
+        let pair = |key: &str| {
+            script
+                .and_then(|s| s.state_pair(key))
+                .unwrap_or([f64::NAN; 2])
+        };
+        let g = self.motor_geometry();
+        let torque = script
+            .and_then(|s| s.last_out("Torque"))
+            .and_then(|m| {
+                let data = m.get("data")?.read_lock::<rhai::Array>()?.clone();
+                let at = |i: usize| data.get(i).and_then(|v| v.as_float().ok());
+                Some([at(g.left_wheel_id)?, at(g.right_wheel_id)?])
+            })
+            .unwrap_or([0.0; 2]);
+        MotorReadings {
+            target_wheel_angle: pair("target_wheel_angle"),
+            target_wheel_rate: pair("target_wheel_rate"),
+            torque,
+        }
+    }
+
+    /// DriveControl's last command `(v, ω)`: the built-in's pursuit command, or the last
+    /// `TargetVelocity` a script in its place wrote (`(0, 0)` before any).
+    pub fn drive_command(&self) -> (f64, f64) {
+        if let Some(d) = self.drive_control() {
+            return d.pursuit().last_command();
+        }
+        self.script(ComponentKind::DriveControl)
+            .and_then(|s| s.last_out("TargetVelocity"))
+            .map_or((0.0, 0.0), |m| (map_number(&m, "vx"), map_number(&m, "w")))
+    }
+
+    /// DriveControl's deviation from the path \[m\]: the built-in's, or the last
+    /// `OutDeviating` a script in its place wrote.
+    pub fn drive_deviation(&self) -> Option<f64> {
+        if let Some(d) = self.drive_control() {
+            return d.deviation();
+        }
+        self.script(ComponentKind::DriveControl)
+            .and_then(|s| s.last_out("OutDeviating"))
+            .map(|m| map_number(&m, "data"))
+    }
+
+    /// The last control point DriveControl holds: the end of the built-in's path, or of the
+    /// newest control points that reached a script in its place.
+    pub fn drive_path_end(&self) -> Option<(f64, f64)> {
+        if let Some(d) = self.drive_control() {
+            return d
+                .pursuit()
+                .polyline()
+                .and_then(|l| l.points().last().copied());
+        }
+        let points = self
+            .script(ComponentKind::DriveControl)?
+            .peek_in("InControlPoints")?;
+        let points = points.get("points")?.read_lock::<rhai::Array>()?.clone();
+        let last = points.last()?.read_lock::<rhai::Map>()?.clone();
+        Some((map_number(&last, "x"), map_number(&last, "y")))
+    }
+
+    /// The built-in DriveControl's phase (`None` while a script is in its place: a script has
+    /// no phase the system reads; spec §7 makes arrival the system's own fact).
+    pub fn drive_phase(&self) -> Option<DrivePhase> {
+        self.drive_control().map(|d| d.pursuit().phase())
     }
 
     /// The execution context (read-only: states, rates, time).
@@ -254,6 +363,11 @@ impl Wiring {
     /// layers.
     pub fn map_key(&self) -> u64 {
         (self.map_loads << 32) | (self.map_updates & 0xffff_ffff)
+    }
+
+    /// Whether `kind`'s place holds a student's script.
+    pub fn is_scripted(&self, kind: ComponentKind) -> bool {
+        self.script(kind).is_some()
     }
 
     /// Whether the planners have nothing left to do for now: no global request pending, no
@@ -331,8 +445,9 @@ impl Wiring {
                 .set_map(map.clone());
             self.get_mut::<PhysicsSim>(ComponentKind::PhysicsSim)
                 .set_map(Some(map.clone()));
-            self.get_mut::<DriveControl>(ComponentKind::DriveControl)
-                .set_map(map.clone());
+            if let Some(drive) = self.drive_control_mut() {
+                drive.set_map(map.clone());
+            }
             let (width, height, grid_size) = (map.width(), map.height(), map.grid_size());
             self.get_mut::<LocalPathPlanning>(ComponentKind::LocalPathPlanning)
                 .set_grid_map(map);
@@ -411,9 +526,12 @@ impl Wiring {
         if self.rx.bump.is_new()
             && let Some(report) = self.rx.bump.read()
         {
-            // Bump detection calls MotorControl's `Stop` (spec §4 Decision).
-            self.get_mut::<MotorControl>(ComponentKind::MotorControl)
-                .stop();
+            // Bump detection calls MotorControl's `Stop` (spec §4 Decision). A script in its
+            // place has no `Stop` service: the call is recorded, and the physics, in Error
+            // after the bump, applies no torque.
+            if let Some(motor) = self.motor_control_mut() {
+                motor.stop();
+            }
             self.record_call(ServiceCall::Stop);
             self.facts.push(EventKind::Bump { report });
         }
@@ -441,9 +559,8 @@ impl Wiring {
         {
             problems.push((ComponentKind::LocalPathPlanning, e));
         }
-        if let Err(e) = self
-            .get_mut::<DriveControl>(ComponentKind::DriveControl)
-            .map_update(u)
+        if let Some(drive) = self.drive_control_mut()
+            && let Err(e) = drive.map_update(u)
         {
             problems.push((ComponentKind::DriveControl, e));
         }
@@ -527,11 +644,101 @@ impl Wiring {
     /// Tells DriveControl the robot's body radius: MotorControl's effective
     /// `radiusOfBodyArea` (002 §4.2), the one value of the robot model.
     fn tell_body_radius(&mut self) {
-        let radius = self.motor_control().geometry().radius_of_body_area;
+        let radius = self.motor_geometry().radius_of_body_area;
         // MotorControl's geometry is checked when built: finite and > 0.
-        let _ = self
-            .get_mut::<DriveControl>(ComponentKind::DriveControl)
-            .set_body_radius(radius);
+        if let Some(drive) = self.drive_control_mut() {
+            let _ = drive.set_body_radius(radius);
+        }
+    }
+
+    fn drive_control_mut(&mut self) -> Option<&mut DriveControl> {
+        self.ec
+            .component_mut::<DriveControl>(ComponentKind::DriveControl.index())
+    }
+
+    fn motor_control_mut(&mut self) -> Option<&mut MotorControl> {
+        self.ec
+            .component_mut::<MotorControl>(ComponentKind::MotorControl.index())
+    }
+
+    // ------------------------------------------------------------------ scripts
+
+    /// Puts a student's script in `kind`'s place (spec §8, Decision 0.4 "loading"), with that
+    /// component's instance name, ports and parameters (their values as they are now), wired
+    /// exactly as the built-in one: the script's top level ran when it was compiled, its
+    /// `on_initialize` runs now (Created → Inactive). Refused, changing nothing, for a place
+    /// no script can take, a script that declares another component, a component that is
+    /// Active, or a failing `on_initialize`.
+    pub fn load_script(&mut self, kind: ComponentKind, program: Program) -> crate::Result<()> {
+        let place = script_place(kind)?;
+        if let Some(declared) = program.declared()
+            && declared != place.name()
+        {
+            return Err(SystemError::ScriptForAnother {
+                declared: crate::present::excerpt(declared),
+                component: kind.name().to_owned(),
+            }
+            .into());
+        }
+        let now = self.ec.tick_now(kind.index())?;
+        let from = self.ec.component_dyn(kind.index())?.configuration_ref();
+        let script = ScriptComponent::new(place, kind.instance_name(), program, from, now);
+        let name = script.program().name().to_owned();
+        self.put_in_place(kind, Box::new(script))?;
+        self.facts.push(EventKind::ScriptLoaded {
+            component: kind.instance_name().to_owned(),
+            script: name,
+        });
+        self.pump();
+        Ok(())
+    }
+
+    /// Puts the built-in component back in `kind`'s place (spec §8: "the built-in component
+    /// can always be put back"), with the parameters as they are now. Refused, changing
+    /// nothing, where no script is, or while the component is Active.
+    pub fn use_built_in(&mut self, kind: ComponentKind) -> crate::Result<()> {
+        script_place(kind)?;
+        let script = self.script(kind).ok_or_else(|| SystemError::NotScripted {
+            component: kind.name().to_owned(),
+        })?;
+        let from = script.configuration_ref();
+        let mut built_in: Box<dyn Component> = match kind {
+            ComponentKind::MotorControl => Box::new(MotorControl::new(kind.instance_name())),
+            _ => Box::new(DriveControl::new(kind.instance_name())),
+        };
+        if let (Some(from), Some(to)) = (from, built_in.configuration()) {
+            for spec in to.specs() {
+                if let Ok(v) = from.value(spec.name) {
+                    let _ = to.set(spec.name, v);
+                }
+            }
+            to.restore_effective(&from.effective_values());
+        }
+        self.put_in_place(kind, built_in)?;
+        self.facts.push(EventKind::BuiltInRestored {
+            component: kind.instance_name().to_owned(),
+        });
+        self.pump();
+        self.tell_body_radius();
+        Ok(())
+    }
+
+    /// Replaces the component in `kind`'s place and connects everything again; on a
+    /// failure nothing has changed.
+    fn put_in_place(
+        &mut self,
+        kind: ComponentKind,
+        component: Box<dyn Component>,
+    ) -> crate::Result<()> {
+        let old = self.ec.replace(kind.index(), component)?;
+        if let Err(e) = self.reconnect() {
+            // The new component lacks a port the table names: the old one goes back.
+            let _ = self.ec.replace(kind.index(), old);
+            let _ = self.reconnect();
+            return Err(e);
+        }
+        self.drain_lifecycle_events();
+        Ok(())
     }
 
     /// Makes the component's next `on_execute` fail with `injected fault: {reason}`.
@@ -707,9 +914,35 @@ impl Wiring {
 
     /// MotorControl's service `Motor::SetPDGain(PGainL, PGainR, DGainL, DGainR)` (002
     /// §3.2.2.1 (1)): the four gains at once; all checked first, nothing changes on an error.
+    /// A script in MotorControl's place gets the same four parameters set at once.
     pub fn set_pd_gain(&mut self, p_l: f64, p_r: f64, d_l: f64, d_r: f64) -> crate::Result<()> {
-        self.get_mut::<MotorControl>(ComponentKind::MotorControl)
-            .set_pd_gain(p_l, p_r, d_l, d_r)?;
+        if let Some(motor) = self.motor_control_mut() {
+            motor.set_pd_gain(p_l, p_r, d_l, d_r)?;
+        } else {
+            let config = self
+                .ec
+                .component_dyn_mut(ComponentKind::MotorControl.index())?
+                .configuration()
+                .ok_or_else(|| SystemError::NoConfiguration {
+                    component: ComponentKind::MotorControl.name().to_owned(),
+                })?;
+            let old: Vec<f64> = ["PGainL", "PGainR", "DGainL", "DGainR"]
+                .iter()
+                .map(|n| config.value(n).unwrap_or(0.0))
+                .collect();
+            let set = |c: &mut dyn ConfigAccess| -> Result<(), crate::rtc::ConfigError> {
+                c.set("PGainL", p_l)?;
+                c.set("PGainR", p_r)?;
+                c.set("DGainL", d_l)?;
+                c.set("DGainR", d_r)
+            };
+            if let Err(e) = set(config) {
+                for (n, v) in ["PGainL", "PGainR", "DGainL", "DGainR"].iter().zip(old) {
+                    let _ = config.set(n, v);
+                }
+                return Err(e.into());
+            }
+        }
         self.record_call(ServiceCall::SetPdGain([p_l, p_r, d_l, d_r]));
         self.facts.push(EventKind::GainsSet { p_l, p_r, d_l, d_r });
         Ok(())
@@ -744,7 +977,7 @@ impl Wiring {
         };
         self.tell_body_radius();
         let dmin = self.local_path_planning().params().dmin;
-        let body_radius = self.motor_control().geometry().radius_of_body_area;
+        let body_radius = self.motor_geometry().radius_of_body_area;
         let key = [dmin.to_bits(), grid_size.to_bits(), body_radius.to_bits()];
         if self.clearance_checked == Some(key) {
             return;
@@ -762,11 +995,38 @@ impl Wiring {
     pub fn clearance_warning(&self) -> Option<EventKind> {
         let grid_size = self.map()?.grid_size();
         let dmin = self.local_path_planning().params().dmin;
-        let body_radius = self.motor_control().geometry().radius_of_body_area;
+        let body_radius = self.motor_geometry().radius_of_body_area;
         (dmin - grid_size / 2.0 < body_radius).then_some(EventKind::ClearanceWarning {
             dmin,
             grid_size,
             body_radius,
         })
     }
+}
+
+/// What MotorControl computed last ([`Wiring::motor_readings`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MotorReadings {
+    /// Target wheel angles `[left, right]` \[rad\].
+    pub target_wheel_angle: [f64; 2],
+    /// Target wheel rates `[left, right]` \[rad/s\].
+    pub target_wheel_rate: [f64; 2],
+    /// Torques `[left, right]` \[N·m\].
+    pub torque: [f64; 2],
+}
+
+/// The place a script would take for `kind`, or the refusal.
+fn script_place(kind: ComponentKind) -> crate::Result<ScriptPlace> {
+    ScriptPlace::from_name(kind.name()).ok_or_else(|| {
+        SystemError::NotScriptable {
+            component: kind.name().to_owned(),
+            places: "DriveControl and MotorControl",
+        }
+        .into()
+    })
+}
+
+/// A number field of a sample map (0 where it has none: the map was checked when written).
+fn map_number(map: &rhai::Map, key: &str) -> f64 {
+    map.get(key).and_then(|v| v.as_float().ok()).unwrap_or(0.0)
 }

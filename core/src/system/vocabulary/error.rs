@@ -43,6 +43,42 @@ pub enum SystemError {
         /// `cut` or `connected`.
         state: &'static str,
     },
+    /// A data port the wiring's table names that the component in that place does not have
+    /// (a component standing in for another must have its ports, spec §8).
+    #[error("{component} has no {direction}-port `{port}` of type {idl} to connect")]
+    PortMissing {
+        /// The component.
+        component: String,
+        /// `in` or `out`.
+        direction: &'static str,
+        /// The port's name.
+        port: &'static str,
+        /// Its IDL type.
+        idl: &'static str,
+    },
+    /// A script for a component no script can stand in for (spec §8, Decision 0.4 "what can
+    /// be replaced").
+    #[error("a script cannot stand in for {component} (it can for {places})")]
+    NotScriptable {
+        /// The component named.
+        component: String,
+        /// The components a script can stand in for.
+        places: &'static str,
+    },
+    /// A script declares one component but is loaded into another.
+    #[error("the script declares `COMPONENT = \"{declared}\"`, not {component}")]
+    ScriptForAnother {
+        /// What the script declares.
+        declared: String,
+        /// Where it was to be loaded.
+        component: String,
+    },
+    /// The built-in component put back where it already is.
+    #[error("{component} already runs the built-in component, not a script")]
+    NotScripted {
+        /// The component named.
+        component: String,
+    },
     /// A request that needs a map before one is loaded.
     #[error("{call}: no map is loaded")]
     NoMap {

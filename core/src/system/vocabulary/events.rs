@@ -118,6 +118,19 @@ pub enum EventKind {
         /// State after.
         to: LifecycleState,
     },
+    /// A student's script was put in a component's place (spec §8); the component is
+    /// Inactive, its `on_initialize` run.
+    ScriptLoaded {
+        /// The component's instance name.
+        component: String,
+        /// The script's name (a file name).
+        script: String,
+    },
+    /// The built-in component was put back in its place (spec §8).
+    BuiltInRestored {
+        /// The component's instance name.
+        component: String,
+    },
     /// `SafeMode` was called: the robot halts until the next `SetPosition`.
     SafeMode,
     /// `Clear` was called: paths and goal dropped.

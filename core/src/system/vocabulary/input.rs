@@ -119,6 +119,21 @@ pub enum Input {
         /// The connection's id.
         connection: String,
     },
+    /// Put a student's script in a component's place (spec §8): compiled, then its
+    /// `on_initialize` run; refused while the component is Active.
+    LoadScript {
+        /// Whose place: DriveControl or MotorControl.
+        component: ComponentKind,
+        /// The script's name (a file name, for people).
+        name: String,
+        /// The script's text.
+        source: String,
+    },
+    /// Put the built-in component back in its place (spec §8).
+    UseBuiltIn {
+        /// Whose place.
+        component: ComponentKind,
+    },
 }
 
 impl Input {
@@ -168,6 +183,15 @@ impl Input {
             },
             Self::RestoreConnection { connection } => InputSummary::RestoreConnection {
                 connection: connection.clone(),
+            },
+            Self::LoadScript {
+                component, name, ..
+            } => InputSummary::LoadScript {
+                component: *component,
+                name: name.clone(),
+            },
+            Self::UseBuiltIn { component } => InputSummary::UseBuiltIn {
+                component: *component,
             },
         }
     }
@@ -257,6 +281,18 @@ pub enum InputSummary {
         /// The connection's id.
         connection: String,
     },
+    /// A student's script loaded into a component's place.
+    LoadScript {
+        /// Whose place.
+        component: ComponentKind,
+        /// The script's name.
+        name: String,
+    },
+    /// The built-in component put back.
+    UseBuiltIn {
+        /// Whose place.
+        component: ComponentKind,
+    },
 }
 
 impl fmt::Display for InputSummary {
@@ -281,6 +317,10 @@ impl fmt::Display for InputSummary {
             Self::SetRate { component } => write!(f, "the rate of {component}"),
             Self::CutConnection { connection } => write!(f, "cut {connection}"),
             Self::RestoreConnection { connection } => write!(f, "restore {connection}"),
+            Self::LoadScript { component, name } => {
+                write!(f, "loading the script {name} into {component}")
+            }
+            Self::UseBuiltIn { component } => write!(f, "the built-in {component} back"),
         }
     }
 }

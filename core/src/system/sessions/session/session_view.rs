@@ -142,7 +142,7 @@ impl Session {
             paused: self.paused(),
             speed: self.speed(),
             pose: pose.into(),
-            body_radius: s.wiring().motor_control().geometry().radius_of_body_area,
+            body_radius: s.wiring().motor_geometry().radius_of_body_area,
             start: m.start().map(PoseView::from),
             goal: m.goal().map(PoseView::from),
             direction: m.direction().into(),

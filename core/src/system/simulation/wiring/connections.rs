@@ -10,10 +10,6 @@
 use serde::Serialize;
 
 use super::Wiring;
-use crate::components::{
-    DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
-    MotorControl, PhysicsSim,
-};
 use crate::errors::SystemError;
 use crate::interfaces::Pose;
 use crate::present::number;
@@ -513,64 +509,122 @@ impl Wiring {
     }
 }
 
-/// Making the connections: when the wiring is made, and in a copy.
+/// Making the connections: when the wiring is made, in a copy, and when a component is put
+/// in another's place. Every connection is made by port name ([`Component::in_port`],
+/// [`Component::out_port_mut`]), so whatever stands in a place is connected the same way.
 impl Wiring {
     /// Connects the data ports of spec §0 and the system's bridges (`crate::system`'s
     /// tables): when the wiring is made, and in an unconnected copy ([`Wiring::try_clone`]).
-    pub(super) fn connect(&mut self) {
+    /// Fails, naming the port, if a component lacks one the table names.
+    pub(super) fn connect(&mut self) -> crate::Result<()> {
+        use crate::components::SetMapMessage;
+        use crate::interfaces::{ControlPoints, GlobalPathCourse, GridPath, PlanningFailure};
+        use crate::map::MapUpdate;
+        use crate::motion::BumpReport;
+        use crate::rtc::{TimedDouble, TimedDoubleSeq, TimedPosition, TimedVelocity};
         use ComponentKind as K;
         let mut links = Links::default();
         macro_rules! link {
-            ($from:ident . $out:ident => system . $rx:ident) => {{
+            ($from:ident . $out:literal => system . $rx:ident : $t:ty) => {{
                 let port = self.rx.$rx.share();
-                let from = self.get_mut::<$from>(K::$from);
-                links.connect(Peer::Rtc(K::$from), &mut from.$out, Peer::Gui, &port);
+                let out = self.out_port::<$t>(K::$from, $out)?;
+                links.connect(Peer::Rtc(K::$from), out, Peer::Gui, &port);
             }};
-            ($from:ident . $out:ident => $to:ident . $inp:ident) => {{
-                let port = self.get::<$to>(K::$to).$inp.share();
-                let from = self.get_mut::<$from>(K::$from);
-                links.connect(
-                    Peer::Rtc(K::$from),
-                    &mut from.$out,
-                    Peer::Rtc(K::$to),
-                    &port,
-                );
+            ($from:ident . $out:literal => $to:ident . $inp:literal : $t:ty) => {{
+                let port = self.in_port::<$t>(K::$to, $inp)?;
+                let out = self.out_port::<$t>(K::$from, $out)?;
+                links.connect(Peer::Rtc(K::$from), out, Peer::Rtc(K::$to), &port);
             }};
         }
         // Data ports (spec §0), each connection recorded for the system's description.
-        link!(PhysicsSim.angle => MotorControl.in_current_wheel_angle);
-        link!(PhysicsSim.position => MotorControl.in_simulated_position);
-        link!(MotorControl.torque => PhysicsSim.torque);
-        link!(MotorControl.out_current_wheel_angle => Localization.in_current_wheel_angle);
-        link!(MotorControl.out_simulated_position_to_localization => Localization.in_simulated_position);
-        link!(Localization.out_current_position => LocalPathPlanning.in_current_position);
-        link!(Localization.out_current_position => DriveControl.in_current_position);
-        link!(Localization.out_current_position => GlobalPathPlanning.in_current_position);
-        link!(DriveControl.target_velocity => MotorControl.target_velocity);
-        link!(DriveControl.out_deviating => LocalPathPlanning.in_deviating);
-        link!(LocalPathPlanning.drive_cons => DriveControl.in_control_points);
+        link!(PhysicsSim."angle" => MotorControl."InCurrentWheelAngle": TimedDoubleSeq);
+        link!(PhysicsSim."position" => MotorControl."InSimulatedPosition": TimedDoubleSeq);
+        link!(MotorControl."Torque" => PhysicsSim."torque": TimedDoubleSeq);
+        link!(MotorControl."OutCurrentWheelAngle" => Localization."InCurrentWheelAngle": TimedDoubleSeq);
+        link!(MotorControl."OutSimulatedPositionToLocalization" => Localization."InSimulatedPosition": TimedDoubleSeq);
+        link!(Localization."OutCurrentPosition" => LocalPathPlanning."InCurrentPosition": TimedPosition);
+        link!(Localization."OutCurrentPosition" => DriveControl."InCurrentPosition": TimedPosition);
+        link!(Localization."OutCurrentPosition" => GlobalPathPlanning."InCurrentPosition": TimedPosition);
+        link!(DriveControl."TargetVelocity" => MotorControl."TargetVelocity": TimedVelocity);
+        link!(DriveControl."OutDeviating" => LocalPathPlanning."InDeviating": TimedDouble);
+        link!(LocalPathPlanning."DriveCons" => DriveControl."InControlPoints": ControlPoints);
         // The system's ends: facts for InventGUI.
-        link!(GlobalPathPlanning.planning_failure => system.global_failure);
-        link!(LocalPathPlanning.invent_gui_cons => system.local_path);
-        link!(LocalPathPlanning.invent_gui_failure => system.local_failure);
-        link!(PhysicsSim.bump => system.bump);
-        link!(DriveControl.safety_stop => system.safety_stop);
+        link!(GlobalPathPlanning."PlanningFailure" => system.global_failure: PlanningFailure);
+        link!(LocalPathPlanning."InventGUICons" => system.local_path: GridPath);
+        link!(LocalPathPlanning."InventGUIConsFailure" => system.local_failure: PlanningFailure);
+        link!(PhysicsSim."bump" => system.bump: BumpReport);
+        link!(DriveControl."SafetyStop" => system.safety_stop: TimedDouble);
         // ... and service calls (`Services`), not data connections of the diagram.
         let port = self.rx.set_map.share();
-        self.get_mut::<MapBuilder>(K::MapBuilder)
-            .set_map
+        self.out_port::<SetMapMessage>(K::MapBuilder, "SetMap")?
             .connect(&port);
         let port = self.rx.map_update.share();
-        self.get_mut::<MapMaintenance>(K::MapMaintenance)
-            .map_update_out
+        self.out_port::<MapUpdate>(K::MapMaintenance, "MapUpdate")?
             .connect(&port);
         let port = self.rx.global_path.share();
-        self.get_mut::<GlobalPathPlanning>(K::GlobalPathPlanning)
-            .global_path_course
+        self.out_port::<GlobalPathCourse>(K::GlobalPathPlanning, "GlobalPathCourse")?
             .connect(&port);
         self.links = links;
+        Ok(())
     }
 
+    /// Connects everything again after a component was put in another's place: every
+    /// out-port's connections dropped, then made afresh, each keeping its count and cut.
+    pub(super) fn reconnect(&mut self) -> crate::Result<()> {
+        for kind in ComponentKind::ALL {
+            if let Ok(c) = self.ec.component_dyn_mut(kind.index()) {
+                c.disconnect_ports();
+            }
+        }
+        let old = core::mem::take(&mut self.links);
+        self.connect()?;
+        self.links.copy_state_from(&old);
+        Ok(())
+    }
+
+    /// In-port `name` of the component in `kind`'s place, shared (to connect to it).
+    fn in_port<T: Clone + Sample + 'static>(
+        &self,
+        kind: ComponentKind,
+        name: &'static str,
+    ) -> crate::Result<InPort<T>> {
+        self.ec
+            .component_dyn(kind.index())?
+            .in_port(name)
+            .and_then(|p| p.downcast_ref::<InPort<T>>())
+            .map(InPort::share)
+            .ok_or_else(|| missing::<T>(kind, "in", name))
+    }
+
+    /// Out-port `name` of the component in `kind`'s place.
+    fn out_port<T: Clone + Sample + 'static>(
+        &mut self,
+        kind: ComponentKind,
+        name: &'static str,
+    ) -> crate::Result<&mut OutPort<T>> {
+        self.ec
+            .component_dyn_mut(kind.index())?
+            .out_port_mut(name)
+            .and_then(|p| p.downcast_mut::<OutPort<T>>())
+            .ok_or_else(|| missing::<T>(kind, "out", name))
+    }
+}
+
+fn missing<T: Sample>(
+    kind: ComponentKind,
+    direction: &'static str,
+    port: &'static str,
+) -> crate::Error {
+    SystemError::PortMissing {
+        component: kind.instance_name().to_owned(),
+        direction,
+        port,
+        idl: T::IDL,
+    }
+    .into()
+}
+
+impl Wiring {
     /// A copy in the same state, connected alike, sharing nothing (a replay's checkpoint).
     /// `None` while an injected sample waits for its component (a tick later it can be).
     pub fn try_clone(&self) -> Option<Self> {
@@ -584,7 +638,7 @@ impl Wiring {
             facts: self.facts.clone(),
             clearance_checked: self.clearance_checked,
         };
-        copy.connect();
+        copy.connect().ok()?;
         copy.links.copy_state_from(&self.links);
         Some(copy)
     }
