@@ -319,7 +319,15 @@ retrying: boolean, } | { "kind": "waiting_for_pose" } | { "kind": "idle" } | { "
 /**
  * Free travel left along the commanded arc \[m\].
  */
-ahead: number, };
+ahead: number, } | { "kind": "script", 
+/**
+ * The script's name (a file name).
+ */
+script: string, 
+/**
+ * Whether it is Active (its actions run every period).
+ */
+active: boolean, };
 
 /**
  * One of the system's components (spec §0). The order of [`ComponentKind::ALL`] is the
@@ -595,7 +603,11 @@ rate_hz: number | null,
 /**
  * Its ports: data in, data out, services provided, services required.
  */
-ports: Array<GraphPort>, };
+ports: Array<GraphPort>, 
+/**
+ * The student's script it runs (its name), if one stands in its place (spec §8).
+ */
+script: string | null, };
 
 /**
  * One line of the picture.

@@ -286,7 +286,16 @@ impl ScriptComponent {
             .iter()
             .zip(config.effective_values())
             .map(|(s, v)| (s.name, v, s.kind == crate::rtc::ParamKind::Int))
-            .collect();
+            .collect::<Vec<_>>();
+        // What the action starts from, to find where it ran past a bound if it does.
+        let before = (
+            self.state.clone(),
+            self.ins
+                .iter()
+                .map(|(n, p)| (n.clone(), p.boxed_clone()))
+                .collect::<Vec<_>>(),
+            params.clone(),
+        );
         let io = Io {
             ins: core::mem::take(&mut self.ins),
             outs: core::mem::take(&mut self.outs),
@@ -302,6 +311,40 @@ impl ScriptComponent {
             self.ins = core::mem::take(&mut io.ins);
             self.outs = core::mem::take(&mut io.outs);
         }
+        let result = match result {
+            Err(ScriptError::Bound {
+                action: name,
+                line: 0,
+                message,
+                ..
+            }) => {
+                let (mut state, ins, params) = before;
+                let outs = self
+                    .outs
+                    .iter()
+                    .map(|(n, p)| (n.clone(), p.boxed_clone()))
+                    .collect();
+                let io = Io {
+                    ins,
+                    outs,
+                    params,
+                    tick: self.tick,
+                    live: true,
+                };
+                let copy = Rtc(std::rc::Rc::new(std::cell::RefCell::new(io)));
+                let (line, column) = self
+                    .program
+                    .locate(action, &mut state, copy)
+                    .unwrap_or((0, 0));
+                Err(ScriptError::Bound {
+                    action: name,
+                    line,
+                    column,
+                    message,
+                })
+            }
+            other => other,
+        };
         let time_s = self.tick.seconds();
         for line in &printed {
             self.console

@@ -53,6 +53,10 @@ pub fn api_error(message: String) -> Box<EvalAltResult> {
 #[derive(Clone)]
 pub struct Program {
     engine: Rc<Engine>,
+    /// The same engine with a debugger that notes the place of every step, made when an
+    /// action first runs past a bound: the engine says where a bound ran out only as the
+    /// action's call, so the action is run again on a copy to find the place.
+    locator: Rc<std::cell::OnceCell<Locator>>,
     ast: Rc<AST>,
     printed: Rc<RefCell<Vec<String>>>,
     source: Rc<str>,
@@ -143,6 +147,7 @@ impl Program {
         printed.borrow_mut().clear();
         Ok(Self {
             engine: Rc::new(engine),
+            locator: Rc::default(),
             ast: Rc::new(ast),
             printed,
             source: source.into(),
@@ -208,6 +213,58 @@ impl Program {
         };
         let printed = core::mem::take(&mut *self.printed.borrow_mut());
         (printed, result.map(drop).map_err(|e| convert(action, *e)))
+    }
+
+    /// Where `action` runs past a bound, run on copies (`state`, and `rtc` over copies of
+    /// the ports): the last place the engine stepped through, 1-based.
+    pub fn locate(
+        &self,
+        action: &'static str,
+        state: &mut Dynamic,
+        rtc: Rtc,
+    ) -> Option<(usize, usize)> {
+        let takes_rtc = *self.actions.get(action)?;
+        let locator = self.locator.get_or_init(Locator::new);
+        locator.last.set(Position::NONE);
+        let mut scope = Scope::new();
+        let options = CallFnOptions::new()
+            .eval_ast(false)
+            .rewind_scope(true)
+            .bind_this_ptr(state);
+        let engine = &locator.engine;
+        let _ = if takes_rtc {
+            engine.call_fn_with_options::<Dynamic>(options, &mut scope, &self.ast, action, (rtc,))
+        } else {
+            engine.call_fn_with_options::<Dynamic>(options, &mut scope, &self.ast, action, ())
+        };
+        let (line, column) = place(locator.last.get());
+        (line > 0).then_some((line, column))
+    }
+}
+
+/// An engine that notes the place of every step it takes ([`Program::locate`]).
+struct Locator {
+    engine: Engine,
+    last: Rc<std::cell::Cell<Position>>,
+}
+
+impl Locator {
+    fn new() -> Self {
+        let last = Rc::new(std::cell::Cell::new(Position::NONE));
+        let mut engine = engine::engine();
+        io::register(&mut engine);
+        let seen = Rc::clone(&last);
+        #[allow(deprecated)] // "not deprecated, but volatile" (rhai's words)
+        engine.register_debugger(
+            |_, debugger| debugger,
+            move |_, event, _, _, pos| {
+                if matches!(event, rhai::debugger::DebuggerEvent::Step) && !pos.is_none() {
+                    seen.set(pos);
+                }
+                Ok(rhai::debugger::DebuggerCommand::StepInto)
+            },
+        );
+        Self { engine, last }
     }
 }
 

@@ -6,7 +6,9 @@
 use super::exercise::{ExerciseStatus, parameter_values};
 use super::exercise_watch::ExerciseWatch;
 use super::scenario::{FileResolver, Scenario};
-use super::setup::{self, BuildOptions, PLAN_SECONDS, Setup};
+use std::collections::BTreeMap;
+
+use super::setup::{self, BuildOptions, PLAN_SECONDS, ScriptText, Setup};
 use super::timeline::{Timeline, secs_to_ns};
 use crate::errors::ScenarioError;
 use crate::system::simulation::robot::System;
@@ -48,6 +50,19 @@ impl ExerciseRun {
         conf: Option<&str>,
         inputs: &[DriveInput],
     ) -> crate::Result<Self> {
+        Self::with_scripts(scenario, resolver, &BTreeMap::new(), conf, inputs)
+    }
+
+    /// As [`ExerciseRun::new`], with students' scripts in components' places (spec §8:
+    /// component → script, loaded as the set-up loads them, [`Setup::scripts`]). A script
+    /// that does not load fails the run with its error (line and column).
+    pub fn with_scripts(
+        scenario: &Scenario,
+        resolver: &dyn FileResolver,
+        scripts: &BTreeMap<String, ScriptText>,
+        conf: Option<&str>,
+        inputs: &[DriveInput],
+    ) -> crate::Result<Self> {
         let err = |reason: String| ScenarioError::Scenario {
             scenario: scenario.name.clone(),
             reason,
@@ -67,12 +82,9 @@ impl ExerciseRun {
             }
             last = t.at;
         }
-        let mut system = setup::build(
-            scenario,
-            resolver,
-            &Setup::of(scenario),
-            BuildOptions::default(),
-        )?;
+        let mut setup = Setup::of(scenario);
+        setup.scripts = scripts.clone();
+        let mut system = setup::build(scenario, resolver, &setup, BuildOptions::default())?;
         let baseline = parameter_values(&system);
         if let Some(text) = conf {
             system.apply(&Input::LoadConf {

@@ -308,6 +308,12 @@ impl ScenarioRun {
         self.system
     }
 
+    /// Carries out a request during the run, as a person would ([`System::apply`]); a
+    /// refused one changes nothing.
+    pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
+        self.system.apply(input)
+    }
+
     /// The outcome, once the run has ended.
     pub fn outcome(&self) -> Option<&Outcome> {
         self.outcome.as_ref()

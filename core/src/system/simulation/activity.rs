@@ -40,14 +40,6 @@ pub enum ComponentActivity {
     },
     /// Not Active: MotorControl and DriveControl do nothing.
     Inactive,
-    /// A student's script stands in the component's place (spec §8): what it does is the
-    /// script's, and its console says it.
-    Script {
-        /// The script's name (a file name).
-        script: String,
-        /// Whether it is Active (its actions run every period).
-        active: bool,
-    },
     /// MapBuilder holds a map.
     Map {
         /// Cells in x.
@@ -134,6 +126,14 @@ pub enum ComponentActivity {
     SafetyStop {
         /// Free travel left along the commanded arc \[m\].
         ahead: f64,
+    },
+    /// A student's script stands in the component's place (spec §8): what it does is the
+    /// script's, and its console says it.
+    Script {
+        /// The script's name (a file name).
+        script: String,
+        /// Whether it is Active (its actions run every period).
+        active: bool,
     },
 }
 
@@ -416,10 +416,6 @@ pub(crate) mod tests {
                 reason: Some(error()),
             },
             A::Inactive,
-            A::Script {
-                script: "pd.rhai".into(),
-                active: true,
-            },
             A::Map {
                 width: 200,
                 height: 100,
@@ -460,6 +456,10 @@ pub(crate) mod tests {
             A::TurningToGoalHeading,
             A::Arrived,
             A::SafetyStop { ahead: 0.25 },
+            A::Script {
+                script: "pd.rhai".into(),
+                active: true,
+            },
         ]
     }
 

@@ -44,6 +44,8 @@ pub struct GraphComponent {
     pub rate_hz: Option<f64>,
     /// Its ports: data in, data out, services provided, services required.
     pub ports: Vec<GraphPort>,
+    /// The student's script it runs (its name), if one stands in its place (spec §8).
+    pub script: Option<String>,
 }
 
 /// What a port is.
@@ -222,6 +224,7 @@ impl SystemGraph {
             state: None,
             rate_hz: None,
             ports: gui_ports,
+            script: None,
         }];
 
         for kind in ComponentKind::ALL {
@@ -256,6 +259,11 @@ impl SystemGraph {
                 state: ec.state(id).ok().map(|s| s.to_string()),
                 rate_hz: ec.rate(id).ok(),
                 ports,
+                script: ec
+                    .component_dyn(id)
+                    .ok()
+                    .and_then(|c| c.script_name())
+                    .map(str::to_owned),
             });
         }
         Self {
@@ -294,7 +302,10 @@ impl SystemGraph {
             let left = side(&[PortKind::In, PortKind::Provided]);
             let right = side(&[PortKind::Out, PortKind::Required]);
             let title = match &c.state {
-                Some(state) => format!("{}\\n{state}", c.instance_name),
+                Some(state) => match &c.script {
+                    Some(script) => format!("{}\\n{state}\\nscript {script}", c.instance_name),
+                    None => format!("{}\\n{state}", c.instance_name),
+                },
                 None => c.instance_name.to_owned(),
             };
             let colour = match c.state.as_deref() {

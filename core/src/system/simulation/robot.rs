@@ -79,8 +79,7 @@ impl System {
 
     // ------------------------------------------------------------------ inputs
 
-    /// Carries out one request (the one interpreter of [`Input`]). Refused requests return
-    /// the error and change nothing.
+    /// Carries out one request (the one interpreter of [`Input`]); a refused one changes nothing.
     pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
         let w = &mut self.wiring;
         let result = match input {
@@ -190,14 +189,7 @@ impl System {
             },
             Input::CutConnection { connection } => w.set_connection_cut(connection, true),
             Input::RestoreConnection { connection } => w.set_connection_cut(connection, false),
-            Input::LoadScript {
-                component,
-                name,
-                source,
-            } => crate::script::Program::compile(name, source)
-                .map_err(crate::Error::from)
-                .and_then(|program| w.load_script(*component, program)),
-            Input::UseBuiltIn { component } => w.use_built_in(*component),
+            Input::LoadScript { .. } | Input::UseBuiltIn { .. } => w.replace_in_place(input),
         };
         self.settle();
         result

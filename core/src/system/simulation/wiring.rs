@@ -10,27 +10,26 @@ use core::fmt;
 
 use crate::components::{
     DriveControl, GlobalPathPlanning, LocalPathPlanning, Localization, MapBuilder, MapMaintenance,
-    MotorControl, MotorGeometry, PhysicsSim, ScriptComponent, ScriptPlace, SetMapMessage,
-    default_geometry,
+    MotorControl, PhysicsSim, SetMapMessage,
 };
 use crate::errors::{LifecycleError, SystemError};
 use crate::interfaces::{Direction, GlobalPathCourse, GridPath, PlanningFailure, Pose};
 use crate::local::FieldExtent;
 use crate::map::{GridMap, MapUpdate};
-use crate::motion::DrivePhase;
 use crate::motion::{BumpReport, ModelFrame, PhysicsParams};
 use crate::reason::Reason;
 use crate::rtc::{
     Component, ConfigAccess, ExecutionContext, InPort, LifecycleEvent, LifecycleState, Time,
     TimedDouble, TimedDoubleSeq,
 };
-use crate::script::Program;
 use crate::system::vocabulary::events::EventKind;
 use crate::system::vocabulary::kind::ComponentKind;
 use crate::system::vocabulary::rates::Rates;
 
 pub(super) mod connections;
+mod places;
 use connections::{Links, ServiceCall, Services};
+pub use places::MotorReadings;
 
 /// What happened in one base tick, or in one request between ticks.
 #[derive(Debug, Clone, PartialEq)]
@@ -220,103 +219,6 @@ impl Wiring {
     pub fn drive_control(&self) -> Option<&DriveControl> {
         self.ec
             .component::<DriveControl>(ComponentKind::DriveControl.index())
-    }
-
-    /// The student's script in `kind`'s place, if one is there (spec §8).
-    pub fn script(&self, kind: ComponentKind) -> Option<&ScriptComponent> {
-        self.ec.component::<ScriptComponent>(kind.index())
-    }
-
-    /// The robot model's geometry: MotorControl's `on_activation` parameters as locked at its
-    /// last activation (002 §5.2.3 (2)); for a script in MotorControl's place, its effective
-    /// parameters (the defaults' geometry where they are not usable, e.g. equal wheel ids).
-    pub fn motor_geometry(&self) -> MotorGeometry {
-        if let Some(m) = self.motor_control() {
-            return *m.geometry();
-        }
-        self.script(ComponentKind::MotorControl)
-            .and_then(ScriptComponent::motor_params)
-            .and_then(|p| MotorGeometry::from_params(p).ok())
-            .unwrap_or_else(default_geometry)
-    }
-
-    /// What MotorControl computed last (002 §5.2.5.4–5): the built-in's target wheel angles
-    /// and rates and its torques; for a script in its place, the `target_wheel_angle` and
-    /// `target_wheel_rate` pairs it keeps in its state (NaN where it keeps none) and the
-    /// last `Torque` it wrote, at the wheel ids.
-    pub fn motor_readings(&self) -> MotorReadings {
-        if let Some(m) = self.motor_control() {
-            return MotorReadings {
-                target_wheel_angle: m.target_wheel_angles(),
-                target_wheel_rate: m.target_wheel_rates(),
-                torque: m.last_torque(),
-            };
-        }
-        let script = self.script(ComponentKind::MotorControl);
-        let pair = |key: &str| {
-            script
-                .and_then(|s| s.state_pair(key))
-                .unwrap_or([f64::NAN; 2])
-        };
-        let g = self.motor_geometry();
-        let torque = script
-            .and_then(|s| s.last_out("Torque"))
-            .and_then(|m| {
-                let data = m.get("data")?.read_lock::<rhai::Array>()?.clone();
-                let at = |i: usize| data.get(i).and_then(|v| v.as_float().ok());
-                Some([at(g.left_wheel_id)?, at(g.right_wheel_id)?])
-            })
-            .unwrap_or([0.0; 2]);
-        MotorReadings {
-            target_wheel_angle: pair("target_wheel_angle"),
-            target_wheel_rate: pair("target_wheel_rate"),
-            torque,
-        }
-    }
-
-    /// DriveControl's last command `(v, ω)`: the built-in's pursuit command, or the last
-    /// `TargetVelocity` a script in its place wrote (`(0, 0)` before any).
-    pub fn drive_command(&self) -> (f64, f64) {
-        if let Some(d) = self.drive_control() {
-            return d.pursuit().last_command();
-        }
-        self.script(ComponentKind::DriveControl)
-            .and_then(|s| s.last_out("TargetVelocity"))
-            .map_or((0.0, 0.0), |m| (map_number(&m, "vx"), map_number(&m, "w")))
-    }
-
-    /// DriveControl's deviation from the path \[m\]: the built-in's, or the last
-    /// `OutDeviating` a script in its place wrote.
-    pub fn drive_deviation(&self) -> Option<f64> {
-        if let Some(d) = self.drive_control() {
-            return d.deviation();
-        }
-        self.script(ComponentKind::DriveControl)
-            .and_then(|s| s.last_out("OutDeviating"))
-            .map(|m| map_number(&m, "data"))
-    }
-
-    /// The last control point DriveControl holds: the end of the built-in's path, or of the
-    /// newest control points that reached a script in its place.
-    pub fn drive_path_end(&self) -> Option<(f64, f64)> {
-        if let Some(d) = self.drive_control() {
-            return d
-                .pursuit()
-                .polyline()
-                .and_then(|l| l.points().last().copied());
-        }
-        let points = self
-            .script(ComponentKind::DriveControl)?
-            .peek_in("InControlPoints")?;
-        let points = points.get("points")?.read_lock::<rhai::Array>()?.clone();
-        let last = points.last()?.read_lock::<rhai::Map>()?.clone();
-        Some((map_number(&last, "x"), map_number(&last, "y")))
-    }
-
-    /// The built-in DriveControl's phase (`None` while a script is in its place: a script has
-    /// no phase the system reads; spec §7 makes arrival the system's own fact).
-    pub fn drive_phase(&self) -> Option<DrivePhase> {
-        self.drive_control().map(|d| d.pursuit().phase())
     }
 
     /// The execution context (read-only: states, rates, time).
@@ -651,96 +553,6 @@ impl Wiring {
         }
     }
 
-    fn drive_control_mut(&mut self) -> Option<&mut DriveControl> {
-        self.ec
-            .component_mut::<DriveControl>(ComponentKind::DriveControl.index())
-    }
-
-    fn motor_control_mut(&mut self) -> Option<&mut MotorControl> {
-        self.ec
-            .component_mut::<MotorControl>(ComponentKind::MotorControl.index())
-    }
-
-    // ------------------------------------------------------------------ scripts
-
-    /// Puts a student's script in `kind`'s place (spec §8, Decision 0.4 "loading"), with that
-    /// component's instance name, ports and parameters (their values as they are now), wired
-    /// exactly as the built-in one: the script's top level ran when it was compiled, its
-    /// `on_initialize` runs now (Created → Inactive). Refused, changing nothing, for a place
-    /// no script can take, a script that declares another component, a component that is
-    /// Active, or a failing `on_initialize`.
-    pub fn load_script(&mut self, kind: ComponentKind, program: Program) -> crate::Result<()> {
-        let place = script_place(kind)?;
-        if let Some(declared) = program.declared()
-            && declared != place.name()
-        {
-            return Err(SystemError::ScriptForAnother {
-                declared: crate::present::excerpt(declared),
-                component: kind.name().to_owned(),
-            }
-            .into());
-        }
-        let now = self.ec.tick_now(kind.index())?;
-        let from = self.ec.component_dyn(kind.index())?.configuration_ref();
-        let script = ScriptComponent::new(place, kind.instance_name(), program, from, now);
-        let name = script.program().name().to_owned();
-        self.put_in_place(kind, Box::new(script))?;
-        self.facts.push(EventKind::ScriptLoaded {
-            component: kind.instance_name().to_owned(),
-            script: name,
-        });
-        self.pump();
-        Ok(())
-    }
-
-    /// Puts the built-in component back in `kind`'s place (spec §8: "the built-in component
-    /// can always be put back"), with the parameters as they are now. Refused, changing
-    /// nothing, where no script is, or while the component is Active.
-    pub fn use_built_in(&mut self, kind: ComponentKind) -> crate::Result<()> {
-        script_place(kind)?;
-        let script = self.script(kind).ok_or_else(|| SystemError::NotScripted {
-            component: kind.name().to_owned(),
-        })?;
-        let from = script.configuration_ref();
-        let mut built_in: Box<dyn Component> = match kind {
-            ComponentKind::MotorControl => Box::new(MotorControl::new(kind.instance_name())),
-            _ => Box::new(DriveControl::new(kind.instance_name())),
-        };
-        if let (Some(from), Some(to)) = (from, built_in.configuration()) {
-            for spec in to.specs() {
-                if let Ok(v) = from.value(spec.name) {
-                    let _ = to.set(spec.name, v);
-                }
-            }
-            to.restore_effective(&from.effective_values());
-        }
-        self.put_in_place(kind, built_in)?;
-        self.facts.push(EventKind::BuiltInRestored {
-            component: kind.instance_name().to_owned(),
-        });
-        self.pump();
-        self.tell_body_radius();
-        Ok(())
-    }
-
-    /// Replaces the component in `kind`'s place and connects everything again; on a
-    /// failure nothing has changed.
-    fn put_in_place(
-        &mut self,
-        kind: ComponentKind,
-        component: Box<dyn Component>,
-    ) -> crate::Result<()> {
-        let old = self.ec.replace(kind.index(), component)?;
-        if let Err(e) = self.reconnect() {
-            // The new component lacks a port the table names: the old one goes back.
-            let _ = self.ec.replace(kind.index(), old);
-            let _ = self.reconnect();
-            return Err(e);
-        }
-        self.drain_lifecycle_events();
-        Ok(())
-    }
-
     /// Makes the component's next `on_execute` fail with `injected fault: {reason}`.
     pub fn inject_fault(&mut self, kind: ComponentKind, reason: &str) -> crate::Result<()> {
         self.ec.inject_fault(kind.index(), reason)?;
@@ -919,29 +731,7 @@ impl Wiring {
         if let Some(motor) = self.motor_control_mut() {
             motor.set_pd_gain(p_l, p_r, d_l, d_r)?;
         } else {
-            let config = self
-                .ec
-                .component_dyn_mut(ComponentKind::MotorControl.index())?
-                .configuration()
-                .ok_or_else(|| SystemError::NoConfiguration {
-                    component: ComponentKind::MotorControl.name().to_owned(),
-                })?;
-            let old: Vec<f64> = ["PGainL", "PGainR", "DGainL", "DGainR"]
-                .iter()
-                .map(|n| config.value(n).unwrap_or(0.0))
-                .collect();
-            let set = |c: &mut dyn ConfigAccess| -> Result<(), crate::rtc::ConfigError> {
-                c.set("PGainL", p_l)?;
-                c.set("PGainR", p_r)?;
-                c.set("DGainL", d_l)?;
-                c.set("DGainR", d_r)
-            };
-            if let Err(e) = set(config) {
-                for (n, v) in ["PGainL", "PGainR", "DGainL", "DGainR"].iter().zip(old) {
-                    let _ = config.set(n, v);
-                }
-                return Err(e.into());
-            }
+            self.set_script_pd_gain([p_l, p_r, d_l, d_r])?;
         }
         self.record_call(ServiceCall::SetPdGain([p_l, p_r, d_l, d_r]));
         self.facts.push(EventKind::GainsSet { p_l, p_r, d_l, d_r });
@@ -1002,31 +792,4 @@ impl Wiring {
             body_radius,
         })
     }
-}
-
-/// What MotorControl computed last ([`Wiring::motor_readings`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MotorReadings {
-    /// Target wheel angles `[left, right]` \[rad\].
-    pub target_wheel_angle: [f64; 2],
-    /// Target wheel rates `[left, right]` \[rad/s\].
-    pub target_wheel_rate: [f64; 2],
-    /// Torques `[left, right]` \[N·m\].
-    pub torque: [f64; 2],
-}
-
-/// The place a script would take for `kind`, or the refusal.
-fn script_place(kind: ComponentKind) -> crate::Result<ScriptPlace> {
-    ScriptPlace::from_name(kind.name()).ok_or_else(|| {
-        SystemError::NotScriptable {
-            component: kind.name().to_owned(),
-            places: "DriveControl and MotorControl",
-        }
-        .into()
-    })
-}
-
-/// A number field of a sample map (0 where it has none: the map was checked when written).
-fn map_number(map: &rhai::Map, key: &str) -> f64 {
-    map.get(key).and_then(|v| v.as_float().ok()).unwrap_or(0.0)
 }
