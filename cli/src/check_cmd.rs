@@ -1,8 +1,10 @@
-//! `rtnav check SCENARIO [--conf F… | --replay F…]`: a scenario's exercise judged for one
-//! hand-in or for a whole class of them.
+//! `rtnav check SCENARIO [--conf F… | --replay F… | --script F… [--component NAME]]`: a
+//! scenario's exercise judged for one hand-in or for a whole class of them.
 //!
-//! Each `--conf` / `--replay` argument is a file or a folder; a folder stands for its
-//! `*.conf` (with `--conf`) or `*.json` (with `--replay`) files. The hand-ins are checked in
+//! Each `--conf` / `--replay` / `--script` argument is a file or a folder; a folder stands for
+//! its `*.conf` (with `--conf`), `*.json` (with `--replay`) or `*.rhai` (with `--script`)
+//! files. A script (spec §8) runs in the place of the component its declaration names, or of
+//! the one `--component` names (it wins). The hand-ins are checked in
 //! parallel, one per core (`--jobs`), and reported in the order of their paths, sorted, so
 //! the table is the same on every machine and at every run.
 //!
@@ -15,7 +17,12 @@
 //! A hand-in that cannot be judged is a row with the reason, never an error of the command:
 //! a file that cannot be read or does not parse, a replay of another scenario, of another
 //! content of this scenario or of another behaviour version, a replay whose run does not
-//! reproduce its recorded trace hash (a file edited by hand), a `.conf` the core refuses.
+//! reproduce its recorded trace hash (a file edited by hand), a `.conf` the core refuses, a
+//! script that does not load (a syntax error, a failing top level, no declaration, a
+//! declaration of another component: the reason names the line and column). A script that
+//! fails while it runs (it throws, hits a runtime error, runs past its operations budget)
+//! puts its component in Error and the run goes on: its row is judged by the checks like any
+//! other, with the script's failure (action, line, column, what went wrong) in the reason.
 //! A replay that ends before the exercise ends is UNFINISHED.
 //!
 //! Exit code: 0 when every hand-in passed, 1 when one failed, was unfinished or was refused,
@@ -31,12 +38,14 @@ use rayon::prelude::*;
 use rtnav::data::RepoResolver;
 use rtnav::present::number;
 use rtnav::system::{
-    Check, CheckState, ExerciseStatus, Replay, Scenario, Session, Unit, Verdict, check_exercise,
+    Check, CheckState, ComponentKind, ExerciseRun, ExerciseStatus, Replay, Scenario, Session, Unit,
+    Verdict, check_exercise,
 };
 
 use clap::Args;
 use rtnav_cli::error::{CliError, CliResult};
 use rtnav_cli::scenario_load::load;
+use rtnav_cli::script_load::{ScriptHandIn, parse_component, script_failure, script_hand_in};
 
 use crate::options::RootOption;
 
@@ -47,6 +56,8 @@ enum HandIn {
     Conf,
     /// Replays (`*.rtnav.json`), as the page downloads them.
     Replay,
+    /// Students' scripts (`*.rhai`, spec §8), each in a component's place.
+    Script,
 }
 
 impl HandIn {
@@ -55,6 +66,7 @@ impl HandIn {
         match self {
             Self::Conf => "conf",
             Self::Replay => "json",
+            Self::Script => "rhai",
         }
     }
 }
@@ -74,6 +86,20 @@ pub struct CheckArgs {
     /// trace.
     #[arg(long, num_args = 1.., value_name = "FILE_OR_DIR", conflicts_with = "conf")]
     replay: Vec<PathBuf>,
+    /// Students' scripts (Rhai, spec §8), files or folders: each run in the place of the
+    /// component it declares (`const COMPONENT = "MotorControl";`) or that --component
+    /// names, the rest of the system as the scenario stands.
+    #[arg(
+        long,
+        num_args = 1..,
+        value_name = "FILE_OR_DIR",
+        conflicts_with_all = ["conf", "replay"]
+    )]
+    script: Vec<PathBuf>,
+    /// The component every script stands in for (MotorControl or DriveControl); wins over
+    /// the scripts' declarations (a script declaring another is refused).
+    #[arg(long, value_name = "NAME", requires = "script", value_parser = parse_component)]
+    component: Option<ComponentKind>,
     #[command(flatten)]
     root: RootOption,
     /// Print the result of one hand-in as one line of JSON instead.
@@ -90,10 +116,12 @@ pub struct CheckArgs {
 impl CheckArgs {
     /// What the files handed in are.
     fn kind(&self) -> HandIn {
-        if self.replay.is_empty() {
-            HandIn::Conf
-        } else {
+        if !self.script.is_empty() {
+            HandIn::Script
+        } else if !self.replay.is_empty() {
             HandIn::Replay
+        } else {
+            HandIn::Conf
         }
     }
 
@@ -102,6 +130,7 @@ impl CheckArgs {
         match self.kind() {
             HandIn::Conf => &self.conf,
             HandIn::Replay => &self.replay,
+            HandIn::Script => &self.script,
         }
     }
 }
@@ -135,6 +164,8 @@ struct Row {
     reason: String,
     /// The checklist, when the hand-in was judged.
     status: Option<ExerciseStatus>,
+    /// How the script handed in failed while it ran, if it did (its action, line, column).
+    script_failed: Option<String>,
 }
 
 /// The hand-ins `paths` name: files as given, folders' files with `kind`'s ending; sorted by
@@ -189,8 +220,9 @@ fn failures(status: &ExerciseStatus) -> String {
         .join("; ")
 }
 
-fn judged(file: &Path, status: ExerciseStatus) -> Row {
-    let (verdict, reason) = match status.verdict {
+/// A judged hand-in's row; `script_failed`: how its script failed while it ran.
+fn judged(file: &Path, status: ExerciseStatus, script_failed: Option<String>) -> Row {
+    let (verdict, mut reason) = match status.verdict {
         Verdict::Passed => (RowVerdict::Passed, String::new()),
         Verdict::Failed => (RowVerdict::Failed, format!("failed: {}", failures(&status))),
         Verdict::Waiting => (
@@ -202,11 +234,18 @@ fn judged(file: &Path, status: ExerciseStatus) -> Row {
             "the recording ends before the exercise ends".to_owned(),
         ),
     };
+    if let Some(failure) = &script_failed {
+        if !reason.is_empty() {
+            reason.push_str("; ");
+        }
+        let _ = write!(reason, "the script failed: {failure}");
+    }
     Row {
         file: file.to_path_buf(),
         verdict,
         reason,
         status: Some(status),
+        script_failed,
     }
 }
 
@@ -216,6 +255,7 @@ fn refused(file: &Path, reason: impl Into<String>) -> Row {
         verdict: RowVerdict::Refused,
         reason: reason.into(),
         status: None,
+        script_failed: None,
     }
 }
 
@@ -268,13 +308,57 @@ fn judge_replay(
     let status = session
         .exercise()
         .ok_or_else(|| CliError::NoExercise(scenario.name.clone()))?;
-    Ok(judged(file, status))
+    Ok(judged(file, status, None))
+}
+
+/// Judges the exercise done with a `.conf` or a script handed in (the rest of the set-up as
+/// the scenario stands): refused when the core refuses either.
+fn judge_exercise(
+    file: &Path,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+    conf: Option<&str>,
+    script: Option<&ScriptHandIn>,
+) -> Row {
+    let scripts = script.map(ScriptHandIn::scripts).unwrap_or_default();
+    let mut run = match ExerciseRun::with_scripts(scenario, resolver, &scripts, conf, &[]) {
+        Ok(run) => run,
+        Err(e) => {
+            return refused(
+                file,
+                script.map_or_else(|| e.to_string(), |s| s.refusal(&e)),
+            );
+        }
+    };
+    let status = run.run_to_end();
+    let failed = script.and_then(|s| script_failure(run.system(), s.component));
+    judged(file, status, failed)
+}
+
+/// Judges one script: compiled and placed (`component`, else its declaration), then the
+/// exercise done with it; refused when it does not load.
+fn judge_script(
+    file: &Path,
+    text: &str,
+    scenario: &Scenario,
+    resolver: &RepoResolver,
+    component: Option<ComponentKind>,
+) -> Row {
+    let name = file.file_name().map_or_else(
+        || file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    match script_hand_in(&name, text, component) {
+        Ok(script) => judge_exercise(file, scenario, resolver, None, Some(&script)),
+        Err(e) => refused(file, e.to_string()),
+    }
 }
 
 /// Judges one hand-in. `Err` only for what is not the hand-in's fault (the scenario).
 fn judge(
     file: &Path,
     kind: HandIn,
+    component: Option<ComponentKind>,
     scenario: &Scenario,
     resolver: &RepoResolver,
 ) -> CliResult<Row> {
@@ -287,10 +371,8 @@ fn judge(
     };
     match kind {
         HandIn::Replay => judge_replay(file, &text, scenario, resolver),
-        HandIn::Conf => Ok(match check_exercise(scenario, resolver, Some(&text), &[]) {
-            Ok(status) => judged(file, status),
-            Err(e) => refused(file, e.to_string()),
-        }),
+        HandIn::Conf => Ok(judge_exercise(file, scenario, resolver, Some(&text), None)),
+        HandIn::Script => Ok(judge_script(file, &text, scenario, resolver, component)),
     }
 }
 
@@ -298,22 +380,24 @@ fn judge(
 fn judge_guarded(
     file: &Path,
     kind: HandIn,
+    component: Option<ComponentKind>,
     scenario: &Scenario,
     resolver: &RepoResolver,
 ) -> CliResult<Row> {
-    catch_unwind(AssertUnwindSafe(|| judge(file, kind, scenario, resolver))).unwrap_or_else(
-        |panic| {
-            let what = panic
-                .downcast_ref::<&str>()
-                .map(|s| (*s).to_owned())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_default();
-            Ok(refused(
-                file,
-                format!("rtnav failed on this file (a defect, please report it): {what}"),
-            ))
-        },
-    )
+    catch_unwind(AssertUnwindSafe(|| {
+        judge(file, kind, component, scenario, resolver)
+    }))
+    .unwrap_or_else(|panic| {
+        let what = panic
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_owned())
+            .or_else(|| panic.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        Ok(refused(
+            file,
+            format!("rtnav failed on this file (a defect, please report it): {what}"),
+        ))
+    })
 }
 
 /// Every hand-in `args` names, judged in parallel, in path order; and whether they are a
@@ -347,7 +431,7 @@ fn judge_all(
     let rows = pool.install(|| {
         files
             .par_iter()
-            .map(|f| judge_guarded(f, args.kind(), scenario, resolver))
+            .map(|f| judge_guarded(f, args.kind(), args.component, scenario, resolver))
             .collect::<Result<Vec<_>, _>>()
     })?;
     Ok((rows, class))
@@ -364,7 +448,11 @@ pub fn check(args: CheckArgs) -> CliResult<ExitCode> {
         // No hand-in: the exercise as the scenario stands (nothing changed).
         let status = check_exercise(&scenario, &resolver, None, &[]).map_err(CliError::core)?;
         (
-            vec![judged(Path::new("(the scenario as it stands)"), status)],
+            vec![judged(
+                Path::new("(the scenario as it stands)"),
+                status,
+                None,
+            )],
             false,
         )
     } else {
@@ -408,7 +496,13 @@ fn exit(all_passed: bool) -> ExitCode {
 fn one(args: &CheckArgs, scenario: &Scenario, row: Row) -> CliResult<ExitCode> {
     let passed = row.verdict == RowVerdict::Passed;
     match (&row.status, args.json) {
-        (Some(status), true) => println!("{}", serde_json::to_string(status)?),
+        (Some(status), true) => {
+            let mut value = serde_json::to_value(status)?;
+            if let (Some(failure), Some(fields)) = (&row.script_failed, value.as_object_mut()) {
+                fields.insert("script_failed".to_owned(), failure.clone().into());
+            }
+            println!("{value}");
+        }
         (None, true) => println!(
             "{}",
             serde_json::json!({
@@ -422,6 +516,9 @@ fn one(args: &CheckArgs, scenario: &Scenario, row: Row) -> CliResult<ExitCode> {
             println!("{status}");
             if row.verdict == RowVerdict::Unfinished {
                 println!("         ({})", row.reason);
+            }
+            if let Some(failure) = &row.script_failed {
+                println!("script   FAILED: {failure}");
             }
         }
         (None, false) => {

@@ -57,6 +57,16 @@ pub enum CliError {
         /// What the core found wrong.
         error: Box<rtnav::Error>,
     },
+    /// A student's script that is not loaded (`--script`): it does not compile, names no
+    /// component, or the core refuses it in the component's place; the reason names the
+    /// line and column where it has them.
+    #[error("`{}`: {reason}", path.display())]
+    Script {
+        /// The script file.
+        path: PathBuf,
+        /// Why, with the line and column.
+        reason: String,
+    },
     /// Options that do not go together, or a value out of its range.
     #[error("{0}")]
     Usage(&'static str),

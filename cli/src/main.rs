@@ -5,6 +5,7 @@
 //!
 //! ```text
 //! rtnav run fixtures/scenarios/corridor_turn.json --png turn.png --csv turn.csv
+//! rtnav run fixtures/scenarios/ex_pd_gains.json --script fixtures/scripts/motor_control_pd.rhai
 //! rtnav render fixtures/scenarios/willow_garage.json --png willow.png
 //! rtnav inspect fixtures/scenarios/open_field.json --cell 30,40
 //! rtnav replay run.rtnav.json --png run.png --csv run.csv
@@ -14,6 +15,7 @@
 //! rtnav check fixtures/scenarios/ex_door_dmin.json --conf my.conf   # exit 0 pass, 1 fail
 //! rtnav check fixtures/scenarios/ex_fault_recovery.json --replay run.rtnav.json
 //! rtnav check fixtures/scenarios/ex_door_dmin.json --replay class/ --csv verdicts.csv
+//! rtnav check fixtures/scenarios/ex_pd_gains.json --script fixtures/scripts/class/
 //! rtnav scenario check fixtures/scenarios/ex_door_dmin.json   # a new exercise, checked
 //! rtnav scenario schema > docs/scenario.schema.json
 //! rtnav system fixtures/scenarios/open_field.json --dot | dot -Tsvg > system.svg
@@ -60,7 +62,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Run a scenario to its outcome and print a summary.
+    /// Run a scenario to its outcome and print a summary; with --script, a student's
+    /// script in a component's place.
     Run(run_cmd::RunArgs),
     /// Draw the initial plan of a scenario (global route, local plan, potential field)
     /// without driving.
@@ -78,13 +81,15 @@ enum Command {
     Compare(compare_cmd::CompareArgs),
     /// Do a scenario's exercise with the hand-ins of one student or of a whole class and
     /// print the verdicts. One hand-in (a file): its checklist and verdict. Several, or a
-    /// folder (its *.conf files with --conf, its *.json files with --replay, sorted): one
-    /// table, a row per file — verdict, each check's measured value with its unit, and why
-    /// when it did not pass. A file that cannot be judged (not a replay of this scenario, of
-    /// another version, unreadable, or whose run does not reproduce its recorded trace) is
-    /// a REFUSED row with the reason. Exit code: 0 when every hand-in passed; 1 when one
-    /// failed, was unfinished or was refused; 2 for a usage error (scenario unreadable or
-    /// without an exercise, no hand-in found, CSV not writable).
+    /// folder (its *.conf files with --conf, *.json with --replay, *.rhai with --script,
+    /// sorted): one table, a row per file — verdict, each check's measured value with its
+    /// unit, and why when it did not pass. A file that cannot be judged (not a replay of
+    /// this scenario, of another version, unreadable, or whose run does not reproduce its
+    /// recorded trace; a script that does not load, at its line and column) is a REFUSED
+    /// row with the reason; a script that fails as it runs is judged, its failure in the
+    /// reason. Exit code: 0 when every hand-in passed; 1 when one failed, was unfinished or
+    /// was refused; 2 for a usage error (scenario unreadable or without an exercise, no
+    /// hand-in found, CSV not writable).
     Check(check_cmd::CheckArgs),
     /// Scenario files: check one, or print their JSON Schema (docs/authoring.md).
     Scenario {

@@ -1,16 +1,24 @@
 //! `rtnav run SCENARIO`: the scenario run to its outcome, a summary printed; the final frame
 //! as PNG and the telemetry as CSV on request. Exit code: 0 when the scenario's expectation
 //! is met (or not checked, with `--until`), 1 when not.
+//!
+//! With `--script FILE`, a student's script (spec §8) runs in the place of the component its
+//! declaration names (`const COMPONENT = "MotorControl";`), or of the one `--component`
+//! names (it wins); the summary says so, and how the script failed if it did. A script that
+//! does not load stops the command with its error, line and column (exit 2).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use rtnav::system::{FileResolver, OutcomeKind, ScenarioRun, TelemetrySample};
+use rtnav::system::{
+    ComponentKind, FileResolver, OutcomeKind, ScenarioRun, Setup, TelemetrySample,
+};
 use rtnav_cli::error::{CliError, CliResult};
 use rtnav_cli::scenario_load::load;
+use rtnav_cli::script_load::{ScriptHandIn, parse_component, script_failure, script_hand_in};
 use rtnav_cli::words::Words;
 
 use crate::frame::{write_bytes, write_png};
@@ -37,13 +45,54 @@ pub struct RunArgs {
     events: bool,
     #[command(flatten)]
     size: SizeOption,
+    /// A student's script (Rhai, spec §8) run in the place of the component it declares
+    /// (`const COMPONENT = "MotorControl";`) or that --component names.
+    #[arg(long, value_name = "FILE")]
+    script: Option<PathBuf>,
+    /// The component the script stands in for (MotorControl or DriveControl); wins over
+    /// the script's declaration.
+    #[arg(long, value_name = "NAME", requires = "script", value_parser = parse_component)]
+    component: Option<ComponentKind>,
+}
+
+/// The script `path`, compiled, and where it goes (`component`, else its declaration).
+fn read_script(path: &Path, component: Option<ComponentKind>) -> CliResult<ScriptHandIn> {
+    let source = std::fs::read_to_string(path).map_err(|source| CliError::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let name = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    script_hand_in(&name, &source, component).map_err(|e| CliError::Script {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })
 }
 
 /// `rtnav run` (module documentation).
 pub fn run(args: RunArgs) -> CliResult<ExitCode> {
     let (scenario, resolver) = load(&args.scenario, args.root.root)?;
     let resolver: &dyn FileResolver = &resolver;
-    let mut run = ScenarioRun::new(&scenario, resolver).map_err(CliError::core)?;
+    let script = match &args.script {
+        Some(path) => Some((path, read_script(path, args.component)?)),
+        None => None,
+    };
+    let mut setup = Setup::of(&scenario);
+    if let Some((_, s)) = &script {
+        setup.scripts = s.scripts();
+    }
+    let mut run = ScenarioRun::with_setup(&scenario, resolver, &setup).map_err(|e| {
+        match &script {
+            // Refused for its declaration (another component's script): said at it.
+            Some((path, s)) if s.declaration_place().is_some() => CliError::Script {
+                path: path.to_path_buf(),
+                reason: s.refusal(&e),
+            },
+            _ => CliError::core(e),
+        }
+    })?;
     if let Some(t) = args.until {
         run.set_limit(t).map_err(CliError::core)?;
     }
@@ -102,6 +151,16 @@ pub fn run(args: RunArgs) -> CliResult<ExitCode> {
         "status          {}",
         Words::english().status(&run.system().status())
     );
+    if let Some((_, s)) = &script {
+        let kind = s.component;
+        println!(
+            "script          {kind} ran the student's script {}",
+            s.text.name
+        );
+        if let Some(failure) = script_failure(run.system(), kind) {
+            println!("script failed   {failure}");
+        }
+    }
     let sim = report.sim_time;
     println!(
         "wall time       {wall:.3} s (real-time factor {:.0}×)",

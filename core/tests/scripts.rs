@@ -181,7 +181,7 @@ fn each_broken_script_fails_with_its_exact_error() {
             ScriptError::Runtime {
                 action: "on_execute".into(),
                 line: 6,
-                column: 12,
+                column: 11,
                 message: "the component has no port `in_wheel_angle` (its in-ports: \
                           target_velocity, in_current_wheel_angle, in_simulated_position; its \
                           out-ports: torque, out_current_wheel_angle, \

@@ -129,6 +129,15 @@ fn share_tokens_are_refused_cheaply() {
     run(&["share-token", "share-json"], 150);
 }
 
+/// Students' scripts: compiled (`Ok` or a short named error), loaded into MotorControl's or
+/// DriveControl's place of open_field's set-up and run, each tick timed; a refused load, a
+/// load over the Active script among them, changes nothing.
+#[test]
+fn scripts_compile_load_and_run_within_their_bounds() {
+    let r = run(&["script"], 60);
+    assert!(r[0].refusals > 20, "refusals compared: {}", r[0].refusals);
+}
+
 /// The checks have teeth: a call that is refused but changes the system is caught.
 #[test]
 fn a_refused_call_that_changes_the_system_is_caught() {

@@ -32,6 +32,7 @@
 
 pub mod components;
 pub mod readers;
+pub mod scripts;
 pub mod system;
 
 use std::cell::{Cell, RefCell};
@@ -745,6 +746,7 @@ pub fn all_targets(root: &Path, data: Option<&Path>) -> Vec<Box<dyn Target>> {
     let mut targets: Vec<Box<dyn Target>> = readers::targets(root, data);
     targets.extend(components::targets());
     targets.extend(system::targets(root));
+    targets.extend(scripts::targets(root));
     targets
 }
 
