@@ -75,6 +75,29 @@ pub enum SystemError {
         /// The request.
         call: &'static str,
     },
+    /// A request that would set the robot moving before it has a pose (spec §5 "Physics",
+    /// Decision 0.4 "no pose until placed"): PhysicsSim is not activated until a start is
+    /// placed (`SetPosition`, or a scenario's start).
+    #[error(
+        "{call}: the robot has no pose yet, so PhysicsSim cannot be activated (place a start first)"
+    )]
+    NotPlaced {
+        /// The request (`Activate` or `ActivateAll`).
+        call: &'static str,
+    },
+    /// A `MapUpdate` that would put an obstacle under the robot's body (spec §5 "Physics",
+    /// Decision 0.4 "an edit on the body"): refused as a whole, as every refused
+    /// `MapUpdate` is (spec §2), naming the first such cell.
+    #[error(
+        "cell ({x}, {y}) lies under the robot's body, so no obstacle can be put there (move the \
+         robot or paint around it)"
+    )]
+    UnderRobot {
+        /// Column of the cell.
+        x: i64,
+        /// Row of the cell.
+        y: i64,
+    },
     /// A number that must be finite (and, for times, non-negative) is not.
     #[error("{what} = {value} must be finite{}", if *non_negative { " and ≥ 0" } else { "" })]
     BadNumber {
