@@ -883,6 +883,53 @@ fn scenario_events_a_new_goal_while_driving_is_reached() {
     assert!(!slow, "kept driving through the new goal");
 }
 
+/// Spec §3 Decision 0.4 "a new goal waits for its course": a new goal off the held route,
+/// then a map edit soon after, at several delays within and beyond the global planner's
+/// period. Before the course made for the new goal arrives no local plan is made on the old
+/// route, so no planning failure is reported in the 300 ms after the goal, and a plan for
+/// the new goal is sent within them.
+#[test]
+fn a_new_goal_then_a_map_edit_soon_after_reports_no_planning_failure() {
+    // Back where it started, behind the robot: not on the held path ahead of it.
+    let aside = Pose::new(START.x, START.y, core::f64::consts::PI);
+    let mut driving = system(GOAL);
+    activate_all(&mut driving);
+    // Off the 10 Hz planners' ticks, so that the delays fall on both sides of one.
+    driving.run_for(5.037).unwrap();
+    assert!(driving.is_driving());
+    for delay_ms in [0, 1, 5, 20, 50, 62, 63, 64, 80, 99, 150, 250] {
+        let mut s = driving.try_clone().unwrap();
+        let goal_ns = s.time_ns();
+        s.apply(&Input::SetGoal {
+            goal: aside,
+            direction: Direction::Forward,
+        })
+        .unwrap();
+        s.run_for(delay_ms as f64 * 1e-3).unwrap();
+        // A cell of the west room, far from both routes: it changes, so it asks for a plan.
+        s.apply(&cells(&[(20, 50, 1)])).unwrap();
+        assert_eq!(last_map_update(&s), (1, 1));
+        s.run_for(0.3 - delay_ms as f64 * 1e-3).unwrap();
+        let window = goal_ns..goal_ns + 300_000_000;
+        let failures: Vec<_> = s
+            .record()
+            .events()
+            .iter()
+            .filter(|e| window.contains(&e.time_ns))
+            .filter(|e| matches!(e.kind, EventKind::PlanningFailed { .. }))
+            .map(|e| (e.time_ns - goal_ns, e.kind.clone()))
+            .collect();
+        assert!(
+            failures.is_empty(),
+            "edit {delay_ms} ms after the goal: {failures:?}"
+        );
+        assert!(
+            s.mission().plan_sent(),
+            "edit {delay_ms} ms after the goal: a plan for the new goal was sent"
+        );
+    }
+}
+
 /// Spec §5 "Physics", Decision 0.4: the robot has no pose until a start is placed — Activate
 /// and Activate all are refused, naming why, and change nothing — and an obstacle painted
 /// onto the placed robot's body is refused as a whole, naming the cell, so no bump at 0 m/s
