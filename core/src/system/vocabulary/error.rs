@@ -194,6 +194,19 @@ pub enum SessionError {
         /// Why.
         reason: String,
     },
+    /// A replay file of a format version this build does not read (an rtnav of another
+    /// release wrote it): what it is and what to do.
+    #[error(
+        "replay: this file is an rtnav replay of format version {found}, written by another \
+         release of rtnav; this one reads version {reads}. Open it with the rtnav that wrote \
+         it, or run the scenario again here and download a new replay"
+    )]
+    ReplayVersion {
+        /// The version the file gives (`missing` when it gives none).
+        found: String,
+        /// The version this build reads.
+        reads: u32,
+    },
     /// A replay of a scenario whose content has changed since the replay was recorded (its
     /// file or its map's files): the run would be judged against something else, so it is
     /// refused (spec §6, Decision 0.3).
