@@ -238,15 +238,7 @@ impl LocalPathPlanning {
         clear_cell(map, "goal", goal_x, goal_y, dmin)?;
         let start = Pose::new(start_x, start_y, start_angle);
         let goal = Pose::new(goal_x, goal_y, goal_angle);
-        // Spec §3 Decision 0.4: the old route serves only where it reaches the new goal.
-        let reaches = match (
-            map.world_to_cell(goal_x, goal_y),
-            nearest_path_index(map, &self.held_path, 0, (start_x, start_y)),
-        ) {
-            (Some(cell), Some(m)) => self.held_path[m..].contains(&cell),
-            _ => false,
-        };
-        self.awaiting_course = !reaches;
+        self.awaiting_course = !self.held_path_reaches(map, (start_x, start_y), (goal_x, goal_y));
         self.start = Some(start);
         self.goal = Some(goal);
         self.current = Some(start);

@@ -79,9 +79,9 @@ impl System {
 
     // ------------------------------------------------------------------ inputs
 
-    /// Carries out one request (the one interpreter of [`Input`]). Refused requests return
-    /// the error and change nothing.
+    /// Carries out one request (the one interpreter of [`Input`]); a refused one changes nothing.
     pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
+        super::placement::check(input, &self.wiring, &self.mission)?;
         let w = &mut self.wiring;
         let result = match input {
             Input::SetPosition {
@@ -132,28 +132,14 @@ impl System {
                 let huge = cells
                     .iter()
                     .find(|c| i32::try_from(c.0).is_err() || i32::try_from(c.1).is_err());
-                // Spec §5 "Physics", Decision 0.4: no obstacle is put under a placed robot.
-                let under = match w.map() {
-                    Some(map) if self.mission.start().is_some() => {
-                        let body = w.physics().physics();
-                        cells.iter().find(|&&(x, y, v)| {
-                            v == 1
-                                && map.contains(x, y)
-                                && !map.is_obstacle(x, y)
-                                && body.body_covers(x, y)
-                        })
-                    }
-                    _ => None,
-                };
-                match (w.map(), huge, under) {
-                    (Some(map), Some(&(x, y, _)), _) => Err(SystemError::CellOutsideMap {
+                match (w.map(), huge) {
+                    (Some(map), Some(&(x, y, _))) => Err(SystemError::CellOutsideMap {
                         x,
                         y,
                         width: map.width(),
                         height: map.height(),
                     }
                     .into()),
-                    (_, None, Some(&(x, y, _))) => Err(SystemError::UnderRobot { x, y }.into()),
                     _ => w
                         .map_update(MapUpdate::from_cells(cells, Time::default()))
                         .map(drop),
@@ -166,23 +152,6 @@ impl System {
             Input::SafeMode => {
                 w.safe_mode();
                 Ok(())
-            }
-            // Spec §5 "Physics", Decision 0.4: the robot has no pose until it is placed.
-            Input::Activate {
-                component: ComponentKind::PhysicsSim,
-            } if self.mission.start().is_none()
-                && w.component_state(ComponentKind::PhysicsSim) == LifecycleState::Inactive =>
-            {
-                Err(SystemError::NotPlaced { call: "Activate" }.into())
-            }
-            Input::ActivateAll
-                if self.mission.start().is_none()
-                    && w.component_state(ComponentKind::PhysicsSim) == LifecycleState::Inactive =>
-            {
-                Err(SystemError::NotPlaced {
-                    call: "ActivateAll",
-                }
-                .into())
             }
             Input::Activate { component } => w.activate(*component).map(drop),
             Input::Deactivate { component } => w.deactivate(*component).map(drop),
