@@ -679,8 +679,7 @@ mod tests {
         assert_eq!(js_number(1e-7), "1e-7");
         assert_eq!(js_number(0.1 + 0.2), "0.30000000000000004");
         // A number without a format is shown to six significant digits, a whole one as it is.
-        let raw =
-            json!({ "d": 0.1 + 0.2, "x": 196.2887221472689, "a": 0.7853981633974483, "w": 2.0 });
+        let raw = json!({ "d": 0.1 + 0.2, "x": 196.2887221472689, "a": core::f64::consts::FRAC_PI_4, "w": 2.0 });
         assert_eq!(
             fill("{d} m ({x}, …) {a} rad {w}", &raw),
             "0.3 m (196.289, …) 0.785398 rad 2"
