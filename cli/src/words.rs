@@ -570,7 +570,8 @@ fn js_number(v: f64) -> String {
 }
 
 /// A placeholder's value as text (`i18n.js`'s `show`): `fmt` empty (a whole number as it
-/// is, any other number as `present::number`; a list joined with ", "), `.N` (N decimals, no minus on a zero), `n` (`present::number`) or `deg.N`
+/// is, any other number as `present::number`; a list joined with ", "), `link` (a
+/// connection's id with an arrow for its `->`), `.N` (N decimals, no minus on a zero), `n` (`present::number`) or `deg.N`
 /// (radians in degrees).
 fn show(v: &Value, fmt: &str) -> String {
     match v {
@@ -581,6 +582,8 @@ fn show(v: &Value, fmt: &str) -> String {
             .join(", "),
         Value::Null if fmt.is_empty() => String::new(),
         Value::Null => "NaN".to_owned(),
+        // A data connection's id (`A.out->B.in`) as people read it: an arrow, not "->".
+        Value::String(s) if fmt == "link" => s.replacen("->", " → ", 1),
         Value::String(s) => s.clone(),
         Value::Bool(b) => b.to_string(),
         Value::Object(_) => "[object Object]".to_owned(),
@@ -680,6 +683,12 @@ mod tests {
         assert_eq!(js_number(0.1 + 0.2), "0.30000000000000004");
         // A number without a format is shown to six significant digits, a whole one as it is.
         let raw = json!({ "d": 0.1 + 0.2, "x": 196.2887221472689, "a": core::f64::consts::FRAC_PI_4, "w": 2.0 });
+        let cut =
+            json!({ "connection": "DriveControl.TargetVelocity->MotorControl.TargetVelocity" });
+        assert_eq!(
+            fill("cut {connection:link}", &cut),
+            "cut DriveControl.TargetVelocity → MotorControl.TargetVelocity"
+        );
         assert_eq!(
             fill("{d} m ({x}, …) {a} rad {w}", &raw),
             "0.3 m (196.289, …) 0.785398 rad 2"
