@@ -78,11 +78,10 @@ pub enum SystemError {
     /// A request that would set the robot moving before it has a pose (spec §5 "Physics",
     /// Decision 0.4 "no pose until placed"): PhysicsSim is not activated until a start is
     /// placed (`SetPosition`, or a scenario's start).
-    #[error(
-        "{call}: the robot has no pose yet, so PhysicsSim cannot be activated (place a start first)"
-    )]
+    #[error("the robot has no pose yet, so PhysicsSim cannot be activated (place a start first)")]
     NotPlaced {
-        /// The request (`Activate` or `ActivateAll`).
+        /// The request (`Activate` or `ActivateAll`); the words leave it to the one who made
+        /// it (the page says "Activate all refused: …").
         call: &'static str,
     },
     /// A `MapUpdate` that would put an obstacle under the robot's body (spec §5 "Physics",
