@@ -398,7 +398,31 @@ fn a_run_that_left_alone_cannot_pass_says_failed_at_once() {
         })
     );
     assert!(matches!(stuck.checks[0].check, Check::Recovered));
+    assert_eq!(
+        stuck.checks[0].state,
+        CheckState::Failed,
+        "the verdict names a failed check"
+    );
+    assert_eq!(
+        stuck.checks[1].state,
+        CheckState::Open,
+        "the others as they stand"
+    );
     assert_eq!(stuck.ended_after, None, "the run goes on");
+    // A replay saved here is judged so (as `rtnav check` judges a hand-in): Failed, naming
+    // the check, not unfinished.
+    let text = s.replay_json().unwrap();
+    let mut judge = Session::new().unwrap();
+    judge
+        .load_scenario(scenario(name), &RepoResolver::new(".."))
+        .unwrap();
+    assert!(judge.load_replay_text(&text).unwrap().matches);
+    let judged = judge.exercise().unwrap();
+    assert_eq!(
+        (judged.verdict, judged.checks[0].state),
+        (Verdict::Failed, CheckState::Failed),
+        "{judged}"
+    );
     for input in [
         Input::Reset {
             component: ComponentKind::DriveControl,
@@ -410,6 +434,11 @@ fn a_run_that_left_alone_cannot_pass_says_failed_at_once() {
         s.apply(&input).unwrap();
     }
     let (_, moving) = until(&mut s, 150.0, |_| true);
+    assert_eq!(
+        moving.checks[0].state,
+        CheckState::Passed,
+        "recovered, for good"
+    );
     assert_eq!(
         (moving.verdict, moving.decided_by),
         (Verdict::Running, None)

@@ -562,12 +562,17 @@ impl ExerciseWatch {
                 if let Some(d) = &mut status.decided_by {
                     d.stuck = Some(stuck.clone());
                 }
-                // The checks as they stand, not as the end would settle them.
-                let own = self.status_now();
-                return ExerciseStatus {
-                    checks: own.checks,
-                    ..status
-                };
+                // The checks as they stand, but the deciding one as the end would settle
+                // it: a Failed verdict always names a failed check (the page's ✗, `rtnav
+                // check`'s reason); it is open again once the robot is set going.
+                let mut checks = self.status_now().checks;
+                if let Some(d) = &status.decided_by
+                    && let (Some(own), Some(settled)) =
+                        (checks.get_mut(d.check), status.checks.get(d.check))
+                {
+                    own.state = settled.state;
+                }
+                return ExerciseStatus { checks, ..status };
             }
         }
         self.status_now()
