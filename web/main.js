@@ -203,7 +203,7 @@ async function boot() {
     simTime.textContent = `${clock.time_s.toFixed(3)} s`;
     simTime.classList.toggle('behind', clock.behind_s > BEHIND_S);
     simTime.title = clock.behind_s > BEHIND_S ? t('clock.behind', { s: clock.behind_s.toFixed(2) }) : '';
-    systemBar.update(frame.telemetry.state, frame.components);
+    systemBar.update(frame.telemetry.state, frame.components, frame.telemetry.start !== null);
     rtc.update(frame.components);
     app.log.update(frame.events);
     telemetry.update(frame.telemetry);

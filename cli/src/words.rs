@@ -569,8 +569,9 @@ fn js_number(v: f64) -> String {
     }
 }
 
-/// A placeholder's value as text (`i18n.js`'s `show`): `fmt` empty (as it is; a list joined
-/// with ", "), `.N` (N decimals, no minus on a zero), `n` (`present::number`) or `deg.N`
+/// A placeholder's value as text (`i18n.js`'s `show`): `fmt` empty (a whole number as it
+/// is, any other number as `present::number`; a list joined with ", "), `link` (a
+/// connection's id with an arrow for its `->`), `.N` (N decimals, no minus on a zero), `n` (`present::number`) or `deg.N`
 /// (radians in degrees).
 fn show(v: &Value, fmt: &str) -> String {
     match v {
@@ -581,16 +582,21 @@ fn show(v: &Value, fmt: &str) -> String {
             .join(", "),
         Value::Null if fmt.is_empty() => String::new(),
         Value::Null => "NaN".to_owned(),
+        // A data connection's id (`A.out->B.in`) as people read it: an arrow, not "->".
+        Value::String(s) if fmt == "link" => s.replacen("->", " → ", 1),
         Value::String(s) => s.clone(),
         Value::Bool(b) => b.to_string(),
         Value::Object(_) => "[object Object]".to_owned(),
         Value::Number(n) => {
             let x = n.as_f64().unwrap_or(f64::NAN);
             if fmt.is_empty() {
+                // A whole number as it is; any other to six significant digits, never the
+                // 17 of a float's shortest form (`0.30000000000000004 m`).
                 return match (n.as_i64(), n.as_u64()) {
                     (Some(i), _) => i.to_string(),
                     (_, Some(u)) => u.to_string(),
-                    _ => js_number(x),
+                    _ if x.fract() == 0.0 => js_number(x),
+                    _ => rtnav::present::number(x),
                 };
             }
             if fmt == "n" {
@@ -675,5 +681,17 @@ mod tests {
         assert_eq!(js_number(1e21), "1e+21");
         assert_eq!(js_number(1e-7), "1e-7");
         assert_eq!(js_number(0.1 + 0.2), "0.30000000000000004");
+        // A number without a format is shown to six significant digits, a whole one as it is.
+        let raw = json!({ "d": 0.1 + 0.2, "x": 196.2887221472689, "a": core::f64::consts::FRAC_PI_4, "w": 2.0 });
+        let cut =
+            json!({ "connection": "DriveControl.TargetVelocity->MotorControl.TargetVelocity" });
+        assert_eq!(
+            fill("cut {connection:link}", &cut),
+            "cut DriveControl.TargetVelocity → MotorControl.TargetVelocity"
+        );
+        assert_eq!(
+            fill("{d} m ({x}, …) {a} rad {w}", &raw),
+            "0.3 m (196.289, …) 0.785398 rad 2"
+        );
     }
 }

@@ -157,7 +157,7 @@ fn class() -> Vec<(String, Vec<u8>, &'static str, &'static str)> {
         "another-version.rtnav.json".to_owned(),
         with(&right, "version", "1").into_bytes(),
         "refused",
-        "version 1 (this build reads version 2)",
+        "format version 1, written by another release of rtnav; this one reads version 2",
     );
     add(
         "changed-scenario.rtnav.json".to_owned(),

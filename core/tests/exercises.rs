@@ -8,8 +8,8 @@
 
 use rtnav::data::RepoResolver;
 use rtnav::system::{
-    Check, CheckState, ComponentKind, DriveInput, ExerciseStatus, Input, Scenario, Unit, Verdict,
-    check_exercise,
+    Check, CheckState, ComponentKind, DecidedBy, DriveInput, ExerciseStatus, Input, Scenario,
+    Session, Stuck, Unit, Verdict, check_exercise,
 };
 
 const EXERCISES: [&str; 9] = [
@@ -309,4 +309,180 @@ fn bad_exercises_are_refused_with_the_reason() {
             .to_string();
         assert!(err.contains(says), "{to}: {err}");
     }
+}
+
+/// `name` loaded in a session as the page loads it, `conf` loaded, the robot activated.
+fn session_with(name: &str, conf: Option<String>) -> Session {
+    let mut session = Session::new().unwrap();
+    session
+        .load_scenario(scenario(name), &RepoResolver::new(".."))
+        .unwrap();
+    if let Some(text) = conf {
+        session.apply(&Input::LoadConf { text }).unwrap();
+    }
+    session.all(&Input::ActivateAll).unwrap();
+    session
+}
+
+fn session(name: &str) -> Session {
+    session_with(name, None)
+}
+
+/// Steps `session` 10 ms at a time until `stop` holds or `seconds` of drive have passed;
+/// returns the time into the drive \[s\] and the exercise then.
+fn until(
+    session: &mut Session,
+    seconds: f64,
+    stop: impl Fn(&ExerciseStatus) -> bool,
+) -> (f64, ExerciseStatus) {
+    loop {
+        let status = session.exercise().unwrap();
+        let started = status.started_at.unwrap();
+        let t = session.system().time() - started;
+        if stop(&status) || t >= seconds {
+            return (t, status);
+        }
+        session.step_ticks(10).unwrap();
+    }
+}
+
+/// Spec §7 Decision 0.4: the verdict as soon as it is decided. ex_fault_recovery left alone:
+/// DriveControl in Error at 8 s, the robot coasts to a halt and stands, and the verdict says
+/// Failed, decided by `recovered`, within a couple of seconds — not at the 150 s limit. A
+/// Reset and an Activate then make it run again, and it passes.
+#[test]
+fn a_run_that_left_alone_cannot_pass_says_failed_at_once() {
+    let name = "ex_fault_recovery";
+    let mut s = session(name);
+    let (t, before) = until(&mut s, 7.9, |e| e.verdict != Verdict::Running);
+    assert_eq!(
+        (before.verdict, before.decided_by),
+        (Verdict::Running, None),
+        "at {t} s"
+    );
+    // The decisive moment: DriveControl in Error (8 s) and the robot come to rest after
+    // coasting on with zero torque; the verdict is decided within a second of it.
+    let mut at_rest = None;
+    let (t, stuck) = loop {
+        let e = s.exercise().unwrap();
+        let t = s.system().time() - e.started_at.unwrap();
+        if at_rest.is_none()
+            && matches!(
+                s.status(),
+                rtnav::system::Status::ComponentError {
+                    motion: rtnav::system::Motion::Stands,
+                    ..
+                }
+            )
+        {
+            at_rest = Some(t);
+        }
+        if e.verdict != Verdict::Running || t > 150.0 {
+            break (t, e);
+        }
+        s.step_ticks(10).unwrap();
+    };
+    assert_eq!(stuck.verdict, Verdict::Failed, "{stuck}");
+    let rest = at_rest.unwrap();
+    assert!(
+        rest > 8.0 && t - rest < 1.0,
+        "at rest {rest} s, decided {t} s into the drive"
+    );
+    assert_eq!(
+        stuck.decided_by,
+        Some(DecidedBy {
+            check: 0,
+            stuck: Some(Stuck::ComponentError {
+                component: "DriveControl0".to_owned()
+            }),
+        })
+    );
+    assert!(matches!(stuck.checks[0].check, Check::Recovered));
+    assert_eq!(
+        stuck.checks[0].state,
+        CheckState::Failed,
+        "the verdict names a failed check"
+    );
+    assert_eq!(
+        stuck.checks[1].state,
+        CheckState::Open,
+        "the others as they stand"
+    );
+    assert_eq!(stuck.ended_after, None, "the run goes on");
+    // A replay saved here is judged so (as `rtnav check` judges a hand-in): Failed, naming
+    // the check, not unfinished.
+    let text = s.replay_json().unwrap();
+    let mut judge = Session::new().unwrap();
+    judge
+        .load_scenario(scenario(name), &RepoResolver::new(".."))
+        .unwrap();
+    assert!(judge.load_replay_text(&text).unwrap().matches);
+    let judged = judge.exercise().unwrap();
+    assert_eq!(
+        (judged.verdict, judged.checks[0].state),
+        (Verdict::Failed, CheckState::Failed),
+        "{judged}"
+    );
+    for input in [
+        Input::Reset {
+            component: ComponentKind::DriveControl,
+        },
+        Input::Activate {
+            component: ComponentKind::DriveControl,
+        },
+    ] {
+        s.apply(&input).unwrap();
+    }
+    let (_, moving) = until(&mut s, 150.0, |_| true);
+    assert_eq!(
+        moving.checks[0].state,
+        CheckState::Passed,
+        "recovered, for good"
+    );
+    assert_eq!(
+        (moving.verdict, moving.decided_by),
+        (Verdict::Running, None)
+    );
+    let (_, end) = until(&mut s, 150.0, |e| e.ended_after.is_some());
+    passed(name, &end);
+
+    // ex_door_dmin as given: no route through the door, decided at the drive's start.
+    let name = "ex_door_dmin";
+    let mut s = session(name);
+    let (t, door) = until(&mut s, 90.0, |e| e.verdict != Verdict::Running);
+    assert!(t < 1.0, "decided {t} s into the drive:\n{door}");
+    assert_eq!(
+        door.decided_by,
+        Some(DecidedBy {
+            check: 0,
+            stuck: Some(Stuck::NoRoute)
+        })
+    );
+    assert!(matches!(door.checks[0].check, Check::Arrived { .. }));
+}
+
+/// Spec §7 Decision 0.4: a check that fails on the way decides the verdict then, naming it;
+/// the run goes on and the verdict at its end is the same.
+#[test]
+fn a_check_failed_for_good_decides_the_verdict_while_the_robot_drives() {
+    let name = "ex_route_remake";
+    let mut s = session_with(name, Some(conf(&format!("{name}.wrong.conf"))));
+    let (t, decided) = until(&mut s, 600.0, |e| e.verdict != Verdict::Running);
+    let clearance = decided
+        .checks
+        .iter()
+        .position(|c| matches!(c.check, Check::MinClearance { .. }))
+        .unwrap();
+    assert_eq!(
+        decided.decided_by,
+        Some(DecidedBy {
+            check: clearance,
+            stuck: None
+        }),
+        "at {t} s:\n{decided}"
+    );
+    assert_eq!(decided.ended_after, None, "decided while the robot drives");
+    let (_, end) = until(&mut s, 600.0, |e| e.ended_after.is_some());
+    assert_eq!(end.verdict, Verdict::Failed);
+    assert_eq!(end.decided_by, decided.decided_by);
 }

@@ -218,7 +218,7 @@ fn s3_2_2_1_set_position_is_checked_and_a_refusal_keeps_the_old_start() {
         err.to_string(),
         format!(
             "start (2.875, 1.125) in cell (11, 4) is too close to an obstacle: obstacle distance {} m ≤ dmin = 0.5 m",
-            libm::sqrt(2.0) * G
+            rtnav::present::number(libm::sqrt(2.0) * G)
         )
     );
     // Nothing changed.

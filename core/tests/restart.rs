@@ -148,7 +148,11 @@ fn a_restart_with_no_scenario_is_refused_by_name_and_changes_nothing() {
     let map = s.map().unwrap().clone();
     let mut picked = Session::new().unwrap();
     picked.load_map("picked.json", map).unwrap();
-    picked.apply(&Input::ActivateAll).unwrap();
+    // No start yet (spec §5 Decision 0.4): the robot is not activated, nothing changes.
+    assert!(matches!(
+        picked.apply(&Input::ActivateAll).unwrap_err(),
+        Error::System(rtnav::errors::SystemError::NotPlaced { .. })
+    ));
     picked.set_paused(true);
     picked.step_ticks(500).unwrap();
     let before = (picked.system().time_ns(), trace_hash(&picked));
@@ -174,7 +178,10 @@ fn the_exercise_read_out_says_when_the_clock_stands_still() {
     assert_eq!(verdict(&s), Verdict::Waiting);
     s.apply(&Input::ActivateAll).unwrap();
     let view = s.exercise_view().unwrap();
-    assert_eq!(view.status.verdict, Verdict::Running);
+    // As given, the door has no route: decided at once (spec §7 Decision 0.4), the clock
+    // paused all the same.
+    assert_eq!(view.status.verdict, Verdict::Failed);
+    assert!(view.status.ended_after.is_none());
     assert!(view.paused);
     assert!(s.telemetry().paused);
     let t = s.system().time_ns();

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use rtnav::errors::SystemError;
 use rtnav::render::Screen;
 use rtnav::rtc::LifecycleState;
 use rtnav::system::{
@@ -123,7 +124,7 @@ fn one_frame_read_holds_the_clock_telemetry_components_new_events_and_exercise()
     assert_eq!(first.exercise, session.exercise_view());
     // The events of a frame are handed out once.
     assert_eq!(session.frame().events, Vec::new());
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     let next = session.frame();
     assert!(
         kinds(&next.events).contains(&"StateChanged"),
@@ -135,7 +136,10 @@ fn one_frame_read_holds_the_clock_telemetry_components_new_events_and_exercise()
 #[test]
 fn activate_all_drives_to_the_goal() {
     let (mut session, _) = loaded("open_field");
-    assert_eq!(session.all(&Input::ActivateAll).to_string(), "Active");
+    assert_eq!(
+        session.all(&Input::ActivateAll).unwrap().to_string(),
+        "Active"
+    );
     session.set_speed(16.0).unwrap();
     assert!(run(&mut session, 120.0, arrived));
     let t = session.telemetry();
@@ -176,7 +180,7 @@ fn a_goal_inside_an_obstacle_is_refused_and_the_old_plan_stays() {
 #[test]
 fn inject_fault_error_with_reason_reset_and_activate_again() {
     let (mut session, _) = loaded("open_field");
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     session
         .inject_fault("DriveControl", "requested from the page")
         .unwrap();
@@ -228,45 +232,81 @@ fn inject_fault_error_with_reason_reset_and_activate_again() {
 }
 
 #[test]
-fn painting_on_the_robot_is_a_bump_and_reset_keeps_what_is_held() {
+fn painting_on_the_robot_is_refused_and_reset_keeps_what_is_held() {
     let (mut session, _) = loaded("open_field");
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     run(&mut session, 2.0, |_| false);
     let at = session.telemetry().pose;
     let (cx, cy) = session.world_to_cell(at.x, at.y).unwrap();
     let (xs, ys): (Vec<i32>, Vec<i32>) = (-1..=1)
         .flat_map(|dx| (-1..=1).map(move |dy| (cx as i32 + dx, cy as i32 + dy)))
         .unzip();
-    session.set_cells(&xs, &ys, 1).unwrap();
+    // Spec §5 "Physics", Decision 0.4: an obstacle under the body is refused whole, so it
+    // is never a bump at 0 m/s; the robot drives on.
+    let e = session.set_cells(&xs, &ys, 1).unwrap_err();
+    assert!(
+        matches!(e, rtnav::Error::System(SystemError::UnderRobot { .. })),
+        "{e}"
+    );
+    assert_eq!(session.cell(cx as i64, cy as i64), Some(false));
     run(&mut session, 0.5, |_| false);
     let physics = &session.components()[2];
-    assert_eq!(physics.info.state, LifecycleState::Error);
-    assert!(
-        matches!(physics.info.last_error, Some(rtnav::Reason::Bump(_))),
-        "{:?}",
-        physics.info.last_error
-    );
-    assert!(kinds(&session.event_views()).contains(&"Bump"));
+    assert_eq!(physics.info.state, LifecycleState::Active);
+    assert!(!kinds(&session.event_views()).contains(&"Bump"));
+    // A component in Error, then Reset: what is held stays.
+    session.inject_fault("PhysicsSim", "test").unwrap();
+    run(&mut session, 0.5, |_| false);
+    assert_eq!(session.components()[2].info.state, LifecycleState::Error);
     let goal = session.plan().goal;
     let where_ = session.telemetry().pose;
-    assert_eq!(session.all(&Input::ResetAll).to_string(), "Inactive");
+    assert_eq!(
+        session.all(&Input::ResetAll).unwrap().to_string(),
+        "Inactive"
+    );
     assert_eq!(session.plan().goal, goal);
     assert_eq!(session.telemetry().pose, where_);
-    assert_eq!(session.cell(cx as i64, cy as i64), Some(true));
-    // Erase the obstacle: the robot can drive on.
-    session.set_cells(&xs, &ys, 0).unwrap();
-    assert_eq!(session.all(&Input::ActivateAll).to_string(), "Active");
+    assert_eq!(
+        session.all(&Input::ActivateAll).unwrap().to_string(),
+        "Active"
+    );
     session.set_speed(16.0).unwrap();
     // DriveControl kept its path and LocalPathPlanning plans afresh on its activation
     // (spec 0.2): the robot drives on with nothing sent again by the page.
     assert!(run(&mut session, 120.0, arrived));
-    assert_eq!(session.telemetry().bumps, 1);
+    assert_eq!(session.telemetry().bumps, 0);
+}
+
+/// Spec §5 "Physics", Decision 0.4: a map loaded from a file has no start, so Activate all
+/// is refused with the reason, nothing changes, and no bump is ever reported.
+#[test]
+fn activate_all_on_a_loaded_map_before_a_start_is_refused_with_the_reason() {
+    let mut session = Session::new().unwrap();
+    let map = rtnav::map::formats::json::load(
+        &std::fs::read_to_string(root().join("fixtures/maps/scenarios/two_rooms.json")).unwrap(),
+    )
+    .unwrap();
+    session.load_map("two_rooms.json", map).unwrap();
+    let before = session.state();
+    let e = session.all(&Input::ActivateAll).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            rtnav::Error::System(SystemError::NotPlaced {
+                call: "ActivateAll"
+            })
+        ),
+        "{e}"
+    );
+    assert_eq!(session.state(), before);
+    run(&mut session, 1.0, |_| false);
+    assert_eq!(session.telemetry().bumps, 0);
+    assert!(!kinds(&session.event_views()).contains(&"Bump"));
 }
 
 #[test]
 fn an_obstacle_painted_on_the_path_is_driven_around() {
     let (mut session, _) = loaded("open_field");
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     session.set_speed(16.0).unwrap();
     run(&mut session, 3.0, |_| false);
     session.event_views();
@@ -346,7 +386,7 @@ fn a_scenarios_timed_obstacle_counts_from_the_start_of_the_drive() {
     // Standing for a minute: nothing appears.
     run(&mut session, 60.0, |_| false);
     assert_eq!(session.map_view().unwrap().obstacles, obstacles);
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     session.set_speed(16.0).unwrap();
     assert!(run(&mut session, 120.0, arrived));
     assert!(session.map_view().unwrap().obstacles > obstacles);
@@ -397,7 +437,7 @@ fn the_status_comes_with_its_fields_for_the_page_to_say() {
     let t = session.telemetry();
     assert_eq!(t.status_kind, "ready");
     assert!(t.status_fields.is_empty(), "{:?}", t.status_fields);
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     session
         .inject_fault("DriveControl", "requested from the page")
         .unwrap();
@@ -485,12 +525,12 @@ fn the_brush_covers_cells_around_the_cell_under_it_or_a_square_in_metres() {
 #[test]
 fn a_frozen_robot_shows_no_speed_after_reset_all_mid_drive() {
     let (mut session, _) = loaded("open_field");
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     assert!(run(&mut session, 8.0, |s| s.telemetry().v > 0.3));
     let driving = session.frame().telemetry;
     assert!(driving.v > 0.3, "driving at {} m/s", driving.v);
     // Reset all mid-drive: every component Inactive, the physics frozen where it stood.
-    session.all(&Input::ResetAll);
+    session.all(&Input::ResetAll).unwrap();
     let pose = session.telemetry().pose;
     run(&mut session, 1.0, |_| false);
     assert_eq!(session.telemetry().pose, pose, "the robot does not move");
@@ -504,7 +544,7 @@ fn a_frozen_robot_shows_no_speed_after_reset_all_mid_drive() {
 #[test]
 fn a_paused_clock_is_a_cause_the_status_carries() {
     let (mut session, _) = loaded("open_field");
-    session.all(&Input::ActivateAll);
+    session.all(&Input::ActivateAll).unwrap();
     assert!(run(&mut session, 8.0, |s| s.telemetry().v > 0.3));
     session.set_paused(true);
     let t = session.frame().telemetry;

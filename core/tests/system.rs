@@ -260,15 +260,18 @@ fn a_bump_stops_the_robot_puts_the_system_in_error_and_reset_recovers() {
     assert_eq!(activate_all(&mut s), SystemState::Active);
     let speed = |s: &System| s.wiring().physics().physics().body_velocity().0;
     // Under way at cruising speed (the local plan stops at sharp control points, so the
-    // moment is found, not fixed).
+    // moment is found, not fixed), the body's front (radius 0.45 m) 2 mm short of a cell.
+    let short_of_a_cell = |s: &System| (s.robot_pose().x + 0.45) / 0.1 % 1.0 > 0.98;
     assert!(
-        s.run_until(4.0, |s| s.robot_pose().x > 2.0 && speed(s) > 0.45)
+        s.run_until(4.0, |s| s.robot_pose().x > 2.0
+            && speed(s) > 0.45
+            && short_of_a_cell(s))
             .unwrap()
     );
     let p = s.robot_pose();
-    // A crate dropped onto the front of the robot's body (radius 0.45 m): no controller can
-    // react before the physics' next step.
-    let front = ((p.x + 0.3) / 0.1) as i64;
+    // A crate dropped just ahead of the body (one on the body is refused, spec §5 Decision
+    // 0.4): no controller can react before the physics' next steps drive the body into it.
+    let front = libm::ceil((p.x + 0.45) / 0.1) as i64;
     let crate_cells: Vec<_> = (front..front + 3)
         .flat_map(|x| (8..18).map(move |y| (x, y, 1)))
         .collect();
@@ -881,4 +884,108 @@ fn scenario_events_a_new_goal_while_driving_is_reached() {
         .filter(|s| (retarget..retarget + 1_000_000_000).contains(&s.time_ns))
         .any(|s| s.v < 0.1);
     assert!(!slow, "kept driving through the new goal");
+}
+
+/// Spec §3 Decision 0.4 "a new goal waits for its course": a new goal off the held route,
+/// then a map edit soon after, at several delays within and beyond the global planner's
+/// period. Before the course made for the new goal arrives no local plan is made on the old
+/// route, so no planning failure is reported in the 300 ms after the goal, and a plan for
+/// the new goal is sent within them.
+#[test]
+fn a_new_goal_then_a_map_edit_soon_after_reports_no_planning_failure() {
+    // Back where it started, behind the robot: not on the held path ahead of it.
+    let aside = Pose::new(START.x, START.y, core::f64::consts::PI);
+    let mut driving = system(GOAL);
+    activate_all(&mut driving);
+    // Off the 10 Hz planners' ticks, so that the delays fall on both sides of one.
+    driving.run_for(5.037).unwrap();
+    assert!(driving.is_driving());
+    for delay_ms in [0, 1, 5, 20, 50, 62, 63, 64, 80, 99, 150, 250] {
+        let mut s = driving.try_clone().unwrap();
+        let goal_ns = s.time_ns();
+        s.apply(&Input::SetGoal {
+            goal: aside,
+            direction: Direction::Forward,
+        })
+        .unwrap();
+        s.run_for(delay_ms as f64 * 1e-3).unwrap();
+        // A cell of the west room, far from both routes: it changes, so it asks for a plan.
+        s.apply(&cells(&[(20, 50, 1)])).unwrap();
+        assert_eq!(last_map_update(&s), (1, 1));
+        s.run_for(0.3 - delay_ms as f64 * 1e-3).unwrap();
+        let window = goal_ns..goal_ns + 300_000_000;
+        let failures: Vec<_> = s
+            .record()
+            .events()
+            .iter()
+            .filter(|e| window.contains(&e.time_ns))
+            .filter(|e| matches!(e.kind, EventKind::PlanningFailed { .. }))
+            .map(|e| (e.time_ns - goal_ns, e.kind.clone()))
+            .collect();
+        assert!(
+            failures.is_empty(),
+            "edit {delay_ms} ms after the goal: {failures:?}"
+        );
+        assert!(
+            s.mission().plan_sent(),
+            "edit {delay_ms} ms after the goal: a plan for the new goal was sent"
+        );
+    }
+}
+
+/// Spec §5 "Physics", Decision 0.4: the robot has no pose until a start is placed — Activate
+/// and Activate all are refused, naming why, and change nothing — and an obstacle painted
+/// onto the placed robot's body is refused as a whole, naming the cell, so no bump at 0 m/s
+/// is ever reported.
+#[test]
+fn no_pose_before_a_start_and_no_obstacle_under_the_body() {
+    let mut s = System::new(Rates::default()).unwrap();
+    s.load_map(corridor());
+    for component in ComponentKind::PLANNING {
+        s.apply(&Input::Activate { component }).unwrap();
+    }
+    let before = s.state();
+    for (input, call) in [
+        (Input::ActivateAll, "ActivateAll"),
+        (
+            Input::Activate {
+                component: ComponentKind::PhysicsSim,
+            },
+            "Activate",
+        ),
+    ] {
+        let e = s.apply(&input).unwrap_err();
+        assert_eq!(e, Error::System(SystemError::NotPlaced { call }), "{e}");
+        assert!(e.to_string().contains("place a start first"), "{e}");
+        assert_eq!(s.state(), before, "nothing changed");
+    }
+    // Before a start, a cell at (0, 0) is a cell like any other.
+    s.apply(&cells(&[(5, 5, 1)])).unwrap();
+    s.run_for(1.0).unwrap();
+    assert_eq!(s.stats().bumps, 0);
+    assert_eq!(
+        s.component_state(ComponentKind::PhysicsSim),
+        LifecycleState::Inactive
+    );
+
+    // Placed: the edit under the body is refused whole, one beside it is carried out.
+    s.apply(&Input::SetPosition {
+        start: START,
+        goal: NEAR_GOAL,
+        direction: Direction::Forward,
+    })
+    .unwrap();
+    let (x, y) = ((START.x / 0.1) as i64, (START.y / 0.1) as i64);
+    let beside = (x + 6, y, 1);
+    let e = s.apply(&cells(&[beside, (x, y, 1)])).unwrap_err();
+    assert_eq!(e, Error::System(SystemError::UnderRobot { x, y }), "{e}");
+    let map = s.map().unwrap();
+    assert!(!map.is_obstacle(x, y) && !map.is_obstacle(beside.0, beside.1));
+    // The body's rim: a cell whose square is 0.45 m away is not under it; one nearer is.
+    let rim = libm::ceil((START.x + 0.45) / 0.1) as i64;
+    assert!(s.apply(&cells(&[(rim - 1, y, 1)])).is_err());
+    s.apply(&cells(&[(rim, y, 1)])).unwrap();
+    assert_eq!(activate_all(&mut s), SystemState::Active);
+    s.run_for(0.5).unwrap();
+    assert_eq!(s.stats().bumps, 0, "no bump at 0 m/s");
 }

@@ -220,11 +220,16 @@ fn every_described_connection_carries_data_in_a_run() {
     s.apply(&Input::Clear).unwrap();
     seen.extend(carried(&graph(&s)));
 
-    // A bump: a crate dropped onto the front of the moving robot.
+    // A bump: a crate dropped just ahead of the moving robot's body (radius 0.45 m; one on
+    // the body is refused, spec §5 Decision 0.4), when its front is 2 mm short of a cell.
     let mut s = system();
     s.apply(&Input::ActivateAll).unwrap();
     under_way(&mut s, 2.0);
-    let crate_ = wall(&s, 0.3, 3);
+    assert!(
+        s.run_until(2.0, |s| (s.robot_pose().x + 0.45) / 0.1 % 1.0 > 0.98)
+            .unwrap()
+    );
+    let crate_ = wall(&s, 0.455, 3);
     s.apply(&crate_).unwrap();
     assert!(s.run_until(2.0, |s| s.stats().bumps > 0).unwrap(), "a bump");
     s.run_for(0.1).unwrap();

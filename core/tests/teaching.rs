@@ -419,7 +419,15 @@ fn an_imported_value_reaches_the_configuration() {
     assert_eq!(physics.effective_value("Mass").unwrap(), 42.5);
     assert_eq!(s.wiring().local_path_planning().params().dmin, 0.75);
     assert_eq!(s.wiring().global_path_planning().params().dmin, 0.75);
-    // The physics uses it from its next tick.
+    // The physics uses it from its next tick, once the robot is placed (spec §5 Decision
+    // 0.4): an open 4 × 4 m floor.
+    s.load_map(rtnav::map::GridMap::from_map_data(&[0; 1600], 40, 40, 0.1).unwrap());
+    s.apply(&Input::SetPosition {
+        start: rtnav::interfaces::Pose::new(2.0, 2.0, 0.0),
+        goal: rtnav::interfaces::Pose::new(2.2, 2.0, 0.0),
+        direction: rtnav::interfaces::Direction::Forward,
+    })
+    .unwrap();
     s.apply(&Input::Activate {
         component: ComponentKind::PhysicsSim,
     })

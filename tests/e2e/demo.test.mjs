@@ -4,9 +4,9 @@
 // Proves, through the page's own canvas, mouse, buttons and readouts: the default scenario
 // drawn on open; Activate all → the robot drives to the goal; an obstacle painted on the
 // path while Active → a replan around it; a goal dropped in an obstacle → refused, the old
-// goal and path kept; Inject fault → Error with its reason → Reset → Inactive → Activate; a
-// bump → Error → Reset all; a bad map file → refused, the map kept; a MovingAI map of the
-// external data (skipped without it); the frame budget at 1280×800 (printed); a Rust panic
+// goal and path kept; Inject fault → Error with its reason → Reset → Inactive → Activate;
+// paint on the robot → refused, no bump; PhysicsSim in Error → Reset all; a bad map file →
+// refused, the map kept; a MovingAI map of the external data (skipped without it); the frame budget at 1280×800 (printed); a Rust panic
 // shown as a crash.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -208,12 +208,13 @@ test('Inject fault → Error with the reason → Reset → Inactive → Activate
   await page.close();
 });
 
-test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', { timeout: 60_000 }, async () => {
+test('painting on the robot is refused, never a bump; a PhysicsSim in Error, then Reset all recovers and keeps the goal', { timeout: 60_000 }, async () => {
   const { page, problems } = await open();
   await activateAll(page);
   await shownDriven(page, 0.3);
   // Paint right where the robot is, with the clock paused (on a loaded machine the robot
-  // would drive off the cell while the brush is chosen); the next tick touches it.
+  // would drive off the cell while the brush is chosen): refused, with the reason (spec §5
+  // Decision 0.4: no obstacle under the body, so no bump at 0 m/s).
   await page.click('#pause');
   await shownText(page, '#pause', 'Run');
   const t = await telemetry(page);
@@ -223,33 +224,38 @@ test('a bump puts PhysicsSim in Error; Reset all recovers and keeps the goal', {
   await page.selectOption('#brush', '5');
   const [x, y] = await cellToPage(page, cell);
   await page.mouse.click(x, y);
-  await page.waitForFunction(([cx, cy]) => window.rtnav.demo.cell(cx, cy) === 1, cell, WAIT);
+  await page.waitForSelector('#notice[data-level="error"]:not([hidden])', WAIT);
+  assert.match(await page.textContent('#notice-text'), /^MapUpdate refused: cell \(\d+, \d+\) lies under the robot's body/);
+  assert.equal(await page.evaluate(([cx, cy]) => window.rtnav.demo.cell(cx, cy), cell), 0);
+  await page.click('#tool-pan');
   await page.click('#pause');
   await shownText(page, '#pause', 'Pause');
+  await shownDriven(page, (await driven(page)) + 0.2);
+  await expectState(page, 'PhysicsSim', 'Active');
+  assert.equal((await telemetry(page)).bumps, 0);
+  // A fault from the RTC panel puts PhysicsSim in Error; Reset all recovers it.
+  await page.click('#components li[data-component="PhysicsSim"] button.fault');
   await expectState(page, 'PhysicsSim', 'Error');
   const reason = await page.textContent('#components li[data-component="PhysicsSim"] .rtc-reason');
-  assert.match(reason, /^Reason: bump: /);
-  assert.equal((await shownLogged(page, 'Bump')).length, 1);
-  await shownStatus(page, /^PhysicsSim0 in Error: bump: .+ \(Reset recovers\); the robot \w+$/);
+  assert.match(reason, /^Reason: /);
+  await shownStatus(page, /^PhysicsSim0 in Error: .+ \(Reset recovers\); the robot \w+$/);
+  // The physics in Error moves nothing: the robot stands where it is.
   const goal = (await plan(page)).goal;
   const pose = (await telemetry(page)).pose;
   await page.click('#reset-all');
   await systemShows(page, 'Inactive');
   await expectState(page, 'PhysicsSim', 'Inactive');
   assert.equal(await page.isVisible('#components li[data-component="PhysicsSim"] .rtc-reason'), false);
-  // Nothing held is lost: the goal, the robot's pose, the painted cells.
+  // Nothing held is lost: the goal, the robot's pose.
   assert.deepEqual((await plan(page)).goal, goal);
   assert.deepEqual((await telemetry(page)).pose, pose);
-  assert.equal(await page.evaluate(([x, y]) => window.rtnav.demo.cell(x, y), cell), 1);
-  // Erase the obstacle, activate: the goal is sent again and the robot drives on.
-  await page.click('#tool-erase');
-  await page.mouse.click(x, y);
-  await page.waitForFunction(([cx, cy]) => window.rtnav.demo.cell(cx, cy) === 0, cell, WAIT);
+  // Activate: the robot drives on.
   const sent = (await logged(page, 'LocalPlanSent')).length;
   await activateAll(page);
   await shownDriven(page, (await driven(page)) + 0.3);
   // LocalPathPlanning plans afresh after its activation (spec §3 Decision 0.2, re-activation).
   assert.ok((await shownLogged(page, 'LocalPlanSent', sent + 1)).slice(sent).some((t) => t.startsWith('local plan sent')));
+  assert.equal((await telemetry(page)).bumps, 0);
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -272,15 +272,15 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
       await page.click('#compare-close');
     }
 
-    // A fault injected from the page into a component that is Active, and a bump: an
-    // obstacle painted where the driving robot is.
+    // A fault injected from the page into a component that is Active, and an obstacle
+    // painted where the driving robot is: refused, in Japanese (spec §5 Decision 0.4).
     await pick(page, 'open_field');
     await page.selectOption('#speed', '1');
     await page.click('#activate-all');
     await page.waitForSelector('#system-state[data-state="Active"]', WAIT);
     await shownDriven(page, 0.3);
     // Paused while the obstacle is painted on the robot (a slow machine must not let it drive
-    // off first); the next tick touches it.
+    // off first).
     await page.click('#pause');
     await page.waitForFunction(() => window.rtnav.demo.paused(), null, WAIT);
     const t = await telemetry(page);
@@ -291,22 +291,23 @@ for (const [width, height] of [[1280, 800], [390, 844]]) {
     await page.$eval('#overlay', (c) => c.scrollIntoView({ block: 'center' }));
     const [px, py] = await cellToPage(page, at);
     await page.mouse.click(px, py);
-    await page.waitForFunction(([x, y]) => window.rtnav.demo.cell(x, y) === 1, at, WAIT);
+    await page.waitForSelector('#notice[data-level="error"]:not([hidden])', WAIT);
+    seen.underRobot = await page.textContent('#notice-text');
+    assert.match(seen.underRobot, /車体の下/, seen.underRobot);
+    assert.deepEqual(english(seen.underRobot, names), [], seen.underRobot);
     await page.click('#tool-pan');
     await page.click('#pause');
-    seen.bump = await waitLogged(page, 'Bump');
-    assert.match(seen.bump, /衝突/, seen.bump);
     await showTab(page, 'rtc');
     await page.click('#components li[data-component="LocalPathPlanning"] button.fault');
     await page.waitForSelector('#components li[data-component="LocalPathPlanning"][data-state="Error"]', WAIT);
-    await checkAllTabs(page, names, `${width}×${height}, a bump`);
+    await checkAllTabs(page, names, `${width}×${height}, painted on the robot`);
     lines.push(...await logLines(page));
     assert.deepEqual(await unsaidEvents(page), [], 'the English catalogue says every event');
 
     // Every kind that happened is said in Japanese in the log (no line as the core wrote it).
     await showTab(page, 'log');
     const kinds = new Set(lines.map(([k]) => k));
-    for (const k of ['PlanningFailed', 'FaultInjected', 'ComponentError', 'StateChanged', 'Arrived', 'Bump', 'GlobalPlan', 'LocalPlanSent', 'GoalSet', 'ParameterSet', 'Page']) {
+    for (const k of ['PlanningFailed', 'FaultInjected', 'ComponentError', 'StateChanged', 'Arrived', 'GlobalPlan', 'LocalPlanSent', 'GoalSet', 'ParameterSet', 'Page']) {
       assert.ok(kinds.has(k), `the log has a ${k} line: ${[...kinds].join(', ')}`);
     }
     // Lines made of names and numbers only (a parameter set, SetPDGain) have no Japanese to say.

@@ -234,23 +234,24 @@ impl Demo {
         self.changed(r).map_err(js)
     }
 
-    /// Activates every Inactive component. Returns the system's state.
-    pub fn activate_all(&mut self) -> String {
-        self.screen.changed();
-        self.session.all(&Input::ActivateAll).to_string()
+    /// Activates every Inactive component. Returns the system's state; before the robot
+    /// is placed it is refused (the reason says so) and changes nothing.
+    pub fn activate_all(&mut self) -> Result<String, JsValue> {
+        let r = self.session.all(&Input::ActivateAll);
+        self.changed(r).map(|s| s.to_string()).map_err(js)
     }
 
     /// Deactivates every Active component. Returns the system's state.
-    pub fn deactivate_all(&mut self) -> String {
-        self.screen.changed();
-        self.session.all(&Input::DeactivateAll).to_string()
+    pub fn deactivate_all(&mut self) -> Result<String, JsValue> {
+        let r = self.session.all(&Input::DeactivateAll);
+        self.changed(r).map(|s| s.to_string()).map_err(js)
     }
 
     /// Resets every component in Error and deactivates the Active ones. Returns the
     /// system's state.
-    pub fn reset_all(&mut self) -> String {
-        self.screen.changed();
-        self.session.all(&Input::ResetAll).to_string()
+    pub fn reset_all(&mut self) -> Result<String, JsValue> {
+        let r = self.session.all(&Input::ResetAll);
+        self.changed(r).map(|s| s.to_string()).map_err(js)
     }
 
     /// The system's state: `Inactive`, `Active`, `Partial` or `Error`.

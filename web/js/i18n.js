@@ -83,8 +83,10 @@ export function number(v) {
 }
 
 /**
- * A placeholder's value as text: `fmt` is empty (as it is; a list joined with ", "), `.N`
- * (N decimals, no minus on a zero), `n` ([`number`]) or `deg.N` (radians in degrees, N decimals).
+ * A placeholder's value as text: `fmt` is empty (a whole number as it is, any other as
+ * [`number`]; a list joined with ", "), `.N`
+ * (N decimals, no minus on a zero), `n` ([`number`]), `deg.N` (radians in degrees, N decimals)
+ * or `link` (a connection's id with an arrow for its `->`).
  * @param {unknown} v
  * @param {string | undefined} fmt
  * @returns {string}
@@ -92,8 +94,12 @@ export function number(v) {
 function show(v, fmt) {
   if (Array.isArray(v)) return v.map((x) => show(x, fmt)).join(', ');
   if (v === null || v === undefined) return fmt ? 'NaN' : '';
+  // A data connection's id (`A.out->B.in`) as people read it: an arrow, not ASCII "->".
+  if (fmt === 'link') return String(v).replace('->', ' → ');
   if (typeof v !== 'number') return String(v);
-  if (!fmt) return String(v);
+  // A whole number as it is; any other to six significant digits (`number`), never the 17
+  // of a float's shortest form ("0.30000000000000004 m").
+  if (!fmt) return Number.isInteger(v) ? String(v) : number(v);
   if (fmt === 'n') return number(v);
   const deg = fmt.startsWith('deg');
   const digits = Number(fmt.replace(/^deg/, '').replace(/^\./, ''));

@@ -403,6 +403,20 @@ status: ComponentActivity, };
 type ConnectionKind = "data" | "service";
 
 /**
+ * What decided an exercise's verdict (spec §7 Decision 0.4).
+ */
+type DecidedBy = { 
+/**
+ * The check that decided it: its index in [`ExerciseStatus::checks`].
+ */
+check: number, 
+/**
+ * Why the run, left alone, cannot pass while that check is still open; `None` when
+ * the check failed for good.
+ */
+stuck: Stuck | null, };
+
+/**
  * `forward` / `backward`.
  */
 type DirectionView = "forward" | "backward";
@@ -496,6 +510,11 @@ checks: Array<CheckStatus>,
  * The verdict.
  */
 verdict: Verdict, 
+/**
+ * What decided a `Failed` verdict: the check that failed first, or the check that a
+ * run left alone cannot pass and why; `None` otherwise.
+ */
+decided_by: DecidedBy | null, 
 /**
  * When the drive started \[s of simulated time\].
  */
@@ -1221,6 +1240,21 @@ description: string,
  * The lesson's text.
  */
 lesson: string, };
+
+/**
+ * Why a run, left alone (nothing more asked of it than its scenario's timeline and
+ * recorded requests), can no longer pass: the robot stands and nothing the system does on
+ * its own moves it again (spec §7 Decision 0.4).
+ */
+type Stuck = { "kind": "component_error", 
+/**
+ * Its instance name.
+ */
+component: string, } | { "kind": "inactive", 
+/**
+ * Its instance name.
+ */
+component: string, } | { "kind": "no_route" } | { "kind": "stopped_off_goal" } | { "kind": "halted" };
 
 /**
  * The whole system as RT System Editor would show it, at one moment.

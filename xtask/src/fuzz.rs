@@ -6,12 +6,13 @@
 //! to `target/fuzz-failures/TARGET/`, ready to be kept there.
 //!
 //! `cargo xtask test` has a fuzz stage ([`test_stage`]): the readers of a person's text and
-//! files and a student's script, each for [`STAGE_SECONDS_PER_TARGET`] with a fresh seed (printed), after their kept
-//! regression cases, with the debug runner `cargo test` has already built. The short,
+//! files and a student's script, each for [`STAGE_SECONDS_PER_TARGET`] with a fresh seed
+//! (printed), after their kept regression cases, with the debug runner `cargo test` has
+//! already built ([`test_build_binary`]: nothing is compiled again). The short,
 //! fixed-seed run of `stress/tests/fuzz.rs` is part of `cargo test`.
 
 use crate::Result;
-use crate::tools::{cargo, repo_root, run, target_dir};
+use crate::tools::{cargo, cmd, repo_root, run, target_dir, test_build_binary};
 
 /// The targets of the fuzz stage: every reader of untrusted text or files (spec §6,
 /// Decision 0.3) — scenario, replay and share-link JSON, `.conf` files and bundles, the map
@@ -89,8 +90,9 @@ pub fn fuzz(rest: &[String]) -> Result {
 /// The fuzz stage of `cargo xtask test` (module documentation). The note is the budget.
 pub fn test_stage() -> Result<Option<String>> {
     let seconds = STAGE_SECONDS_PER_TARGET * STAGE_TARGETS.len() as f64;
-    let mut c = cargo();
-    c.args(["run", "-q", "-p", "rtnav-stress", "--", "fuzz", "--seconds"])
+    let stress = test_build_binary("rtnav-stress")?;
+    let mut c = cmd(&stress.to_string_lossy());
+    c.args(["fuzz", "--seconds"])
         .arg(seconds.to_string())
         .arg("--corpus")
         .arg(repo_root().join("fixtures/fuzz-regressions"))

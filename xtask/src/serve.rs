@@ -23,7 +23,7 @@ use std::time::{Duration, Instant};
 
 use oxhttp::Server;
 use oxhttp::model::header::{
-    ACCEPT_ENCODING, CACHE_CONTROL, CONTENT_ENCODING, CONTENT_TYPE, LOCATION, VARY,
+    ACCEPT_ENCODING, ALLOW, CACHE_CONTROL, CONTENT_ENCODING, CONTENT_TYPE, LOCATION, VARY,
 };
 use oxhttp::model::{Body, Method, Request, Response, StatusCode};
 
@@ -150,11 +150,26 @@ fn status(code: StatusCode, text: &'static str) -> Response<Body> {
     response
 }
 
+/// The answer to `request`: GET, and HEAD (the same status and headers, no body; a link
+/// checker's or a cache's question), of a file under `root`; any other method is 405.
 fn respond(root: &Path, request: &mut Request<Body>) -> Response<Body> {
+    let head = request.method() == Method::HEAD;
+    let mut response = answer(root, request);
+    if head {
+        *response.body_mut() = Body::empty();
+    }
+    response
+}
+
+fn answer(root: &Path, request: &mut Request<Body>) -> Response<Body> {
     let path = request.uri().path();
-    if request.method() != Method::GET {
+    if request.method() != Method::GET && request.method() != Method::HEAD {
         eprintln!("serve: 405 {} {path}", request.method());
-        return status(StatusCode::METHOD_NOT_ALLOWED, "only GET");
+        let mut response = status(StatusCode::METHOD_NOT_ALLOWED, "only GET and HEAD");
+        response
+            .headers_mut()
+            .insert(ALLOW, oxhttp::model::HeaderValue::from_static("GET, HEAD"));
+        return response;
     }
     // A folder without its slash: relative URLs in its page need it.
     if !path.ends_with('/')
@@ -289,6 +304,34 @@ mod tests {
         assert_eq!(headers[1], None);
         assert!(got == gz);
         std::fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn head_is_answered_as_get_without_the_body() {
+        let root = web_root();
+        let (code, headers, body) = get(&root, "/index.html", None);
+        assert_eq!(code, 200);
+        for method in [Method::HEAD, Method::POST] {
+            let mut request = Request::builder()
+                .method(method.clone())
+                .uri("/index.html")
+                .body(Body::empty())
+                .unwrap();
+            let response = respond(&root, &mut request);
+            let content_type = response
+                .headers()
+                .get(CONTENT_TYPE)
+                .map(|v| v.to_str().unwrap().to_owned());
+            if method == Method::HEAD {
+                assert_eq!(response.status().as_u16(), 200);
+                assert_eq!(content_type, headers[0]);
+                assert!(response.into_body().to_vec().unwrap().is_empty());
+            } else {
+                assert_eq!(response.status().as_u16(), 405);
+                assert_eq!(response.headers().get(ALLOW).unwrap(), "GET, HEAD");
+            }
+        }
+        assert!(!body.is_empty());
     }
 
     #[test]

@@ -5,11 +5,11 @@
 //! stuck period or growing memory.
 //!
 //! `cargo xtask test` runs a one-hour soak of open_field ([`test_stage`]) with the debug
-//! runner that `cargo test` has already built (about 30 s), rather than building the release
-//! runner for it.
+//! runner that `cargo test` has already built (about 30 s; [`test_build_binary`]), rather
+//! than building the release runner for it.
 
 use crate::Result;
-use crate::tools::{cargo, run};
+use crate::tools::{cargo, cmd, run, test_build_binary};
 
 /// The scenarios soaked when none is named.
 const DEFAULT_SCENARIOS: [&str; 2] = [
@@ -74,12 +74,8 @@ pub fn soak(rest: &[String]) -> Result {
 
 /// The stage of `cargo xtask test`: one simulated hour of open_field.
 pub fn test_stage() -> Result<Option<String>> {
-    run(cargo().args([
-        "run",
-        "-q",
-        "-p",
-        "rtnav-stress",
-        "--",
+    let stress = test_build_binary("rtnav-stress")?;
+    run(cmd(&stress.to_string_lossy()).args([
         "soak",
         "--hours",
         "1",

@@ -264,14 +264,9 @@ fn e2e_files(only: &[String]) -> Result<Option<String>> {
     if !site.join(E2E_SUB_PATH).join("index.html").is_file() {
         return Err("no dist folder to test: the page stage did not make one".into());
     }
-    let cli = tools::target_dir()
-        .join("debug")
-        .join(format!("rtnav{}", std::env::consts::EXE_SUFFIX));
     // Built every time (a no-op when it is current): a binary left from an older build would
-    // judge the page's run by older rules.
-    run(cargo()
-        .args(["build", "-q", "--bin", "rtnav"])
-        .args(tools::WORKSPACE_FEATURES))?;
+    // judge the page's run by older rules. The test stage's build, not one of its own.
+    let cli = tools::test_build_binary("rtnav")?;
     let server = Background::start(&site)?;
     let url = format!("{}{E2E_SUB_PATH}/", server.url);
     println!(

@@ -53,6 +53,24 @@ pub fn cmd(program: &str) -> Command {
 /// unify per build: a build with other features compiles the core again).
 pub const WORKSPACE_FEATURES: [&str; 3] = ["--workspace", "--features", "rtnav/typescript"];
 
+/// The workspace's debug binary `name` as the test stage builds it: `cargo test --no-run`
+/// with [`WORKSPACE_FEATURES`], which has nothing to do once `cargo test` ran. The fuzz, soak
+/// and browser stages run it, so no stage compiles the workspace a second time: a `cargo run
+/// -p rtnav-stress` (the core without `typescript`) or a `cargo build` (no dev-dependencies,
+/// so other features for a few shared crates) would, because features unify per build.
+pub fn test_build_binary(name: &str) -> Result<PathBuf> {
+    run(cargo()
+        .args(["test", "--no-run", "-q"])
+        .args(WORKSPACE_FEATURES))?;
+    let bin = target_dir()
+        .join("debug")
+        .join(format!("{name}{}", std::env::consts::EXE_SUFFIX));
+    if !bin.is_file() {
+        return Err(format!("the test build made no binary {}", bin.display()).into());
+    }
+    Ok(bin)
+}
+
 pub fn cargo() -> Command {
     let program = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
     let mut c = cmd(&program);

@@ -1,7 +1,7 @@
 //! Errors of the global planner (spec §5 "GlobalPathPlanning"). Positions are said in
 //! metres with the cell in parentheses ([`crate::present::place`], spec §7).
 
-use crate::present::place;
+use crate::present::{number, place};
 
 /// Errors of the global planner (spec §5 "GlobalPathPlanning"). Each is also sent as a
 /// `PlanningFailure` notice by the component.
@@ -25,7 +25,7 @@ pub enum GlobalPlanningError {
         theta: f64,
     },
     /// A start or goal outside the map.
-    #[error("{which} ({x}, {y}) m is outside the map")]
+    #[error("{which} ({}, {}) m is outside the map", number(*x), number(*y))]
     OutsideMap {
         /// `start` or `goal`.
         which: &'static str,

@@ -1,5 +1,7 @@
 //! Errors of LocalPathPlanning (seed 000, spec §3).
 
+use crate::present::number;
+
 /// Errors of the LocalPathPlanning component (seed 000, spec §3): a `LocalPath` service call
 /// refused (nothing held changes), or the reason a local plan could not be made (sent to the
 /// GUI as the planning-failure notice of 000 §5.2.4.13).
@@ -30,7 +32,7 @@ pub enum LocalPathError {
         call: &'static str,
     },
     /// A position outside the map (outside counts as obstacle, spec §2).
-    #[error("{what} ({x}, {y}) is outside the map")]
+    #[error("{what} ({}, {}) is outside the map", number(*x), number(*y))]
     OutsideMap {
         /// `start`, `goal` or `current position`.
         what: &'static str,
@@ -42,8 +44,8 @@ pub enum LocalPathError {
     /// A position whose cell, or a cell within `dmin` of it, is an obstacle (000 §5.2.4.2,
     /// §5.2.4.4).
     #[error(
-        "{what} ({x}, {y}) in cell ({}, {}) is too close to an obstacle: obstacle distance {distance} m ≤ dmin = {dmin} m",
-        cell.0, cell.1
+        "{what} ({}, {}) in cell ({}, {}) is too close to an obstacle: obstacle distance {} m ≤ dmin = {} m",
+        number(*x), number(*y), cell.0, cell.1, number(*distance), number(*dmin)
     )]
     NotClear {
         /// `start`, `goal` or `current position`.

@@ -343,6 +343,14 @@ impl Model {
     }
 }
 
+/// The distance from `(x, y)` to the square of cell `(i, j)` of `map` (0 inside it) \[m\].
+fn square_distance(map: &GridMap, i: i64, j: i64, x: f64, y: f64) -> f64 {
+    let g = map.grid_size();
+    let (ox, oy) = map.origin();
+    let (lx, ly) = (ox + i as f64 * g, oy + j as f64 * g);
+    libm::hypot(x - x.clamp(lx, lx + g), y - y.clamp(ly, ly + g))
+}
+
 /// The physics of spec §5: [`Physics::step`] advances it by exactly 1 ms.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Physics {
@@ -508,6 +516,18 @@ impl Physics {
         }
     }
 
+    /// Whether an obstacle in cell `(i, j)` of the held map would touch the body where it
+    /// stands now (the test of [`Physics::step`]: the cell's square closer than
+    /// `body_radius` to the axle centre, or containing it). `false` without a map.
+    pub fn body_covers(&self, i: i64, j: i64) -> bool {
+        let Some(map) = self.map.as_ref() else {
+            return false;
+        };
+        let (x, y) = (self.state.pose.x, self.state.pose.y);
+        let d = square_distance(map, i, j, x, y);
+        d < self.params.body_radius || d == 0.0
+    }
+
     /// The body transform OpenHRP3 would report: `[X, Y, Z, A11..A33]` of the model origin
     /// (spec §5 "It reports the pose as OpenHRP3 did").
     pub fn model_transform(&self) -> [f64; TRANSFORM_LEN] {
@@ -559,7 +579,7 @@ impl Physics {
                 let (lx, ly) = (ox + i as f64 * g, oy + j as f64 * g);
                 let cx = x.clamp(lx, lx + g);
                 let cy = y.clamp(ly, ly + g);
-                let d = libm::hypot(x - cx, y - cy);
+                let d = square_distance(map, i, j, x, y);
                 let touches = d < r || d == 0.0;
                 if touches && best.is_none_or(|b| d < b.distance) {
                     best = Some(Touch {

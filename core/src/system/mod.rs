@@ -72,7 +72,9 @@ mod simulation;
 mod vocabulary;
 
 pub use runs::compare::{ComparePlots, CompareTable, Comparison, RunSummary, compare, setup_with};
-pub use runs::exercise::{Check, CheckState, CheckStatus, Exercise, ExerciseStatus, Unit, Verdict};
+pub use runs::exercise::{
+    Check, CheckState, CheckStatus, DecidedBy, Exercise, ExerciseStatus, Stuck, Unit, Verdict,
+};
 pub use runs::exercise_run::{DriveInput, ExerciseRun, check_exercise};
 pub use runs::exercise_watch::ExerciseWatch;
 pub use runs::runner::{

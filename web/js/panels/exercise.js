@@ -106,8 +106,24 @@ export function createExercisePanel(root, app) {
     setText(verdict, stands
       ? t(`exercise.verdict.${status.verdict}_paused`)
       : status.ended_after === null
-        ? t(`exercise.verdict.${status.verdict}`)
+        ? decidedText(status) ?? t(`exercise.verdict.${status.verdict}`)
         : t(`exercise.verdict.${status.verdict}_after`, { s: num(status.ended_after, 1) }));
+  }
+
+  /**
+   * A verdict decided while the run goes on (the core's `decided_by`): the check that can no
+   * longer pass, and, for a run that cannot move on by itself, why.
+   * @param {ExerciseView} status
+   * @returns {string | null}
+   */
+  function decidedText(status) {
+    const by = status.decided_by;
+    const decided = by ? status.checks[by.check] : undefined;
+    if (status.verdict !== 'failed' || !by || !decided) return null;
+    const check = checkText(decided.check);
+    if (!by.stuck) return t('exercise.verdict.failed_by', { check });
+    const why = t(`exercise.stuck.${by.stuck.kind}`, 'component' in by.stuck ? { component: by.stuck.component } : {});
+    return t('exercise.verdict.failed_stuck', { check, why });
   }
 
   /**

@@ -44,8 +44,10 @@ export function createSystemBar(root, app) {
      * Every frame: the state and which requests make sense now.
      * @param {SystemState} s the system's state
      * @param {ComponentView[]} components
+     * @param {boolean} placed whether the robot has a pose (a start was placed): before, the
+     *   core refuses to activate PhysicsSim, and Activate all says so (spec §5 Decision 0.4)
      */
-    update(s, components) {
+    update(s, components, placed) {
       const active = components.filter((c) => c.state === 'Active').length;
       const error = components.filter((c) => c.state === 'Error').length;
       if (badge.dataset.state !== s) {
@@ -56,6 +58,11 @@ export function createSystemBar(root, app) {
       }
       setText(badge, s === 'Partial' ? t('system.partial', { active, total: components.length }) : s);
       buttons.activate.disabled = !components.some((c) => c.state === 'Inactive');
+      const missing = !placed && components.some((c) => c.name === 'PhysicsSim' && c.state === 'Inactive');
+      if (buttons.activate.dataset.unplaced !== String(missing)) {
+        buttons.activate.dataset.unplaced = String(missing);
+        buttons.activate.title = t(missing ? 'system.activate_all.unplaced' : 'system.activate_all.title');
+      }
       buttons.deactivate.disabled = active === 0;
       buttons.reset.disabled = error === 0 && active === 0;
     },

@@ -32,7 +32,9 @@
 //! - [`LocalPathPlanning::request_replan`] (a GUI button; not in the seed).
 //!
 //! A request counts only while a plan can be made — map, start/goal and a held path are
-//! present, the goal is not reached and SafeMode is off — and is served once, on the next
+//! present, the goal is not reached, SafeMode is off and no new goal waits for its course
+//! (spec §3 Decision 0.4: a new goal that the held path does not reach is planned for only
+//! once the `GlobalPathCourse` made for it arrives) — and is served once, on the next
 //! tick, however many triggers came before it. If a new course arrives while no plan can be
 //! made, its control points are made from the path as it is and sent (000 §5.2.4.3). After
 //! arrival nothing replans until a new `SetPosition` (or an activation).
@@ -129,6 +131,9 @@ pub struct LocalPathPlanning {
     /// A plan begun and not finished (its field grows over executions in the planner): the
     /// way out of the `dmin` zone to put before it.
     unfinished: Option<EscapeLead>,
+    /// A new goal that the held path does not reach: no local plan until the
+    /// `GlobalPathCourse` made for it arrives (spec §3 Decision 0.4).
+    awaiting_course: bool,
 }
 
 const PLANNER: &str = "LocalPathPlanning";
@@ -176,6 +181,7 @@ impl LocalPathPlanning {
             planned_with: None,
             escaped: 0,
             unfinished: None,
+            awaiting_course: false,
         }
     }
 
@@ -188,8 +194,9 @@ impl LocalPathPlanning {
     /// or a start/goal outside the map or whose cell or any cell within `dmin` is an
     /// obstacle. Accepting it clears arrival, SafeMode, a pending replan request and the
     /// field and local plan drawn for the old goal; the held path stays (GlobalPathPlanning
-    /// sends the new one; until then a replan on the old path fails with
-    /// [`LocalPathError::GoalNotOnPath`] unless it passes the new goal).
+    /// sends the new one). Spec §3 Decision 0.4: if the held path, from the cell nearest the
+    /// start on, does not reach the new goal's cell, no local plan is made until the next
+    /// `GlobalPathCourse` ([`LocalPathPlanning::awaits_course`]); one that does is planned on.
     #[allow(clippy::too_many_arguments)]
     pub fn set_position(
         &mut self,
@@ -230,6 +237,7 @@ impl LocalPathPlanning {
         clear_cell(map, "goal", goal_x, goal_y, dmin)?;
         let start = Pose::new(start_x, start_y, start_angle);
         let goal = Pose::new(goal_x, goal_y, goal_angle);
+        self.awaiting_course = !self.held_path_reaches(map, (start_x, start_y), (goal_x, goal_y));
         self.start = Some(start);
         self.goal = Some(goal);
         self.current = Some(start);
@@ -273,6 +281,7 @@ impl LocalPathPlanning {
         self.last_failure = None;
         self.retry_at_ns = None;
         self.planned_with = None;
+        self.awaiting_course = false;
         self.drop_unfinished();
     }
 
@@ -362,6 +371,7 @@ impl LocalPathPlanning {
         })?;
         let cells = course_cells(map, grid_path_x, grid_path_y, num)?;
         self.held_path = cells;
+        self.awaiting_course = false;
         self.match_index = 0;
         self.flags.path = true;
         self.drop_unfinished();
@@ -527,6 +537,12 @@ impl LocalPathPlanning {
         !waiting
     }
 
+    /// Whether a new goal waits for the `GlobalPathCourse` made for it: the held path does
+    /// not reach it, so no local plan is made on it meanwhile (spec §3 Decision 0.4).
+    pub fn awaits_course(&self) -> bool {
+        self.awaiting_course
+    }
+
     /// Whether a plan is being made over executions (spec §3 Decision 0.2): its field is
     /// unfinished, and what was last sent stays until it is done.
     pub fn is_planning(&self) -> bool {
@@ -543,7 +559,7 @@ impl LocalPathPlanning {
 
     fn can_replan(&self) -> bool {
         let f = &self.flags;
-        f.map && f.position && f.path && !f.arrived && !f.safe_mode
+        f.map && f.position && f.path && !f.arrived && !f.safe_mode && !self.awaiting_course
     }
 
     fn raise_replan_request(&mut self) -> bool {
@@ -761,7 +777,11 @@ impl Component for LocalPathPlanning {
         if replan {
             self.send_global = false;
             self.replan(tick, &params);
-        } else if self.send_global && self.flags.position && !self.flags.safe_mode {
+        } else if self.send_global
+            && self.flags.position
+            && !self.flags.safe_mode
+            && !self.awaiting_course
+        {
             self.send_global = false;
             self.send_held_path(tick);
         }

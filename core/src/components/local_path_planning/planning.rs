@@ -5,6 +5,7 @@
 use super::{LocalPathPlanning, LocalPathPlanningParams, RETRY_NS, plan_params};
 use crate::errors::LocalPathError;
 use crate::local::{EscapeLead, PlanRequest, Progress, control_points, nearest_path_index};
+use crate::map::GridMap;
 use crate::rtc::Tick;
 
 /// The field cells one execution finalizes at most (spec §3 Decision 0.2, "A local plan over
@@ -17,6 +18,24 @@ use crate::rtc::Tick;
 pub const FIELD_CELLS_PER_EXECUTION: usize = 1 << 16;
 
 impl LocalPathPlanning {
+    /// Whether the held path, from the cell nearest `start` on, reaches the cell of `goal`
+    /// on `map`: a new goal that it does not reach waits for its course (spec §3 Decision
+    /// 0.4, [`LocalPathPlanning::awaits_course`]).
+    pub(super) fn held_path_reaches(
+        &self,
+        map: &GridMap,
+        start: (f64, f64),
+        goal: (f64, f64),
+    ) -> bool {
+        match (
+            map.world_to_cell(goal.0, goal.1),
+            nearest_path_index(map, &self.held_path, 0, start),
+        ) {
+            (Some(cell), Some(m)) => self.held_path[m..].contains(&cell),
+            _ => false,
+        }
+    }
+
     /// Spec §3 steps 3–8, after escaping the `dmin` zone if the robot stands in it.
     pub(super) fn replan(&mut self, tick: &Tick, params: &LocalPathPlanningParams) {
         let (Some(map), Some(goal), Some(current)) = (self.map.as_ref(), self.goal, self.current)

@@ -25,6 +25,11 @@
 //! Decision 0.3 "exercise checks"): a check that waits for something (arrival, a speed, a
 //! recovery) fails, a check that forbids something (a bump, too many plans) passes.
 //!
+//! **Decision (the verdict as soon as it is decided, spec §7 Decision 0.4)**: the verdict
+//! is [`Verdict::Failed`] while the run goes on as soon as it can no longer pass — a check
+//! failed, or, left alone, the robot stands where nothing moves it ([`Stuck`]) and the end
+//! would fail a check — and [`ExerciseStatus::decided_by`] names the check.
+//!
 //! **Decision (values)**: a check's measured value has one meaning and one unit
 //! ([`Check::unit`]), decided or not: the time of arrival \[s\], the heading error \[°\],
 //! the clearance \[m\], the plans made, the fastest speed within the time a speed must be
@@ -394,8 +399,48 @@ pub enum Verdict {
     Running,
     /// Ended with every check passed.
     Passed,
-    /// Ended with at least one check failed.
+    /// The run can no longer pass (spec §7 Decision 0.4, the verdict as soon as it is
+    /// decided): a check failed for good, or — left alone — the robot stands where nothing
+    /// will move it ([`Stuck`]); [`ExerciseStatus::decided_by`] names the check. Also the
+    /// verdict of an exercise that ended with a check failed.
     Failed,
+}
+
+/// Why a run, left alone (nothing more asked of it than its scenario's timeline and
+/// recorded requests), can no longer pass: the robot stands and nothing the system does on
+/// its own moves it again (spec §7 Decision 0.4).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Stuck {
+    /// A component is in Error: only a Reset recovers it.
+    ComponentError {
+        /// Its instance name.
+        component: String,
+    },
+    /// A component the drive needs is Inactive: only an Activate starts it.
+    Inactive {
+        /// Its instance name.
+        component: String,
+    },
+    /// GlobalPathPlanning found no route; it tries again only when the map or `dmin`
+    /// changes.
+    NoRoute,
+    /// The robot came to rest off the goal with the path driven.
+    StoppedOffGoal,
+    /// SafeMode or Clear halted it until the next goal.
+    Halted,
+}
+
+/// What decided an exercise's verdict (spec §7 Decision 0.4).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
+pub struct DecidedBy {
+    /// The check that decided it: its index in [`ExerciseStatus::checks`].
+    pub check: usize,
+    /// Why the run, left alone, cannot pass while that check is still open; `None` when
+    /// the check failed for good.
+    pub stuck: Option<Stuck>,
 }
 
 /// One check as it stands (the page's checklist line, `rtnav check`'s line).
@@ -458,6 +503,9 @@ pub struct ExerciseStatus {
     pub checks: Vec<CheckStatus>,
     /// The verdict.
     pub verdict: Verdict,
+    /// What decided a `Failed` verdict: the check that failed first, or the check that a
+    /// run left alone cannot pass and why; `None` otherwise.
+    pub decided_by: Option<DecidedBy>,
     /// When the drive started \[s of simulated time\].
     pub started_at: Option<f64>,
     /// When the exercise ended, counted from the drive's start \[s\].

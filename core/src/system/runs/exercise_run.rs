@@ -141,7 +141,8 @@ impl ExerciseRun {
             if chunk > 1 {
                 self.timeline.run(&mut self.system, chunk - 1);
             }
-            self.watch.observe(&self.system);
+            let more_to_come = self.timeline.pending() > 0 || self.next_input < self.inputs.len();
+            self.watch.observe(&self.system, more_to_come);
         }
         self.watch.status()
     }

@@ -4,13 +4,14 @@
 //! parameters).
 
 use super::exercise::{
-    Check, CheckState, CheckStatus, Exercise, ExerciseStatus, ParameterValues, Verdict,
-    parameter_values,
+    Check, CheckState, CheckStatus, DecidedBy, Exercise, ExerciseStatus, ParameterValues, Stuck,
+    Verdict, parameter_values,
 };
 use crate::motion::angle_diff;
 use crate::system::simulation::parameter_warning::ParameterWarning;
-use crate::system::simulation::rest::Offset;
+use crate::system::simulation::rest::{Motion, Offset};
 use crate::system::simulation::robot::System;
+use crate::system::simulation::status::Status;
 use crate::system::simulation::telemetry::TelemetrySample;
 use crate::system::vocabulary::events::EventKind;
 use crate::system::vocabulary::kind::ComponentKind;
@@ -58,6 +59,11 @@ pub struct ExerciseWatch {
     max_speed: f64,
     faulted: Vec<String>,
     fault_seen: bool,
+    /// The first check seen failed once the drive started: its index in the status's
+    /// checks (the exercise's, then the two rules).
+    first_failed: Option<usize>,
+    /// Left alone, why the run cannot move on, as last looked (spec §7 Decision 0.4).
+    stuck: Option<Stuck>,
 }
 
 impl ExerciseWatch {
@@ -98,6 +104,8 @@ impl ExerciseWatch {
             max_speed: 0.0,
             faulted: Vec::new(),
             fault_seen: false,
+            first_failed: None,
+            stuck: None,
         };
         if system.is_driving() {
             watch.started_ns = Some(system.time_ns());
@@ -117,8 +125,11 @@ impl ExerciseWatch {
     }
 
     /// Reads what happened since the last look: the record's new events, then its new
-    /// telemetry samples, then the time limit. Does nothing once ended.
-    pub fn observe(&mut self, system: &System) {
+    /// telemetry samples, then the time limit. Does nothing once ended. `more_to_come`:
+    /// whether a request is still to come without anyone asking (an event of the scenario's
+    /// timeline, a recorded request of a replay); without one, a robot that stands where
+    /// nothing moves it again decides the verdict (spec §7 Decision 0.4).
+    pub fn observe(&mut self, system: &System, more_to_come: bool) {
         if self.ended() {
             return;
         }
@@ -171,6 +182,7 @@ impl ExerciseWatch {
             if self.ended() {
                 return;
             }
+            self.note_failure();
         }
         self.check_rule(system);
         let clearance = system.stats().min_clearance;
@@ -182,7 +194,27 @@ impl ExerciseWatch {
             } else {
                 self.deadlines(now);
             }
+            self.note_failure();
+            self.stuck = if more_to_come || self.ended() {
+                None
+            } else {
+                stuck(system)
+            };
         }
+    }
+
+    /// Notes the first check seen failed once the drive has started.
+    fn note_failure(&mut self) {
+        if self.first_failed.is_some() || self.started_ns.is_none() {
+            return;
+        }
+        let rules = [self.rule.state, self.warning_rule.state];
+        self.first_failed = self
+            .progress
+            .iter()
+            .map(|p| p.state)
+            .chain(rules)
+            .position(|state| state == CheckState::Failed);
     }
 
     fn on_event(&mut self, time_ns: u64, kind: &EventKind, system: &System) {
@@ -507,8 +539,47 @@ impl ExerciseWatch {
         }
     }
 
-    /// The exercise as it stands.
+    /// The exercise as it stands. Spec §7 Decision 0.4: the verdict is `Failed` as soon as
+    /// the run can no longer pass — a check failed (checks do not recover), or, left alone,
+    /// the robot stands where nothing moves it and ending the exercise now would fail a
+    /// check — naming the check that decided it. `Passed` comes at the end: until then a
+    /// rule or a check that forbids something (a bump, a parameter changed) can still fail.
     pub fn status(&self) -> ExerciseStatus {
+        if self.ended_ns.is_none()
+            && self.first_failed.is_none()
+            && let Some(stuck) = &self.stuck
+        {
+            // Left alone: what the end would settle now.
+            let mut settled = self.clone();
+            settled.stuck = None;
+            settled.end(
+                self.time_limit_ns
+                    .saturating_add(self.started_ns.unwrap_or(0)),
+            );
+            let mut status = settled.status();
+            if status.verdict == Verdict::Failed {
+                status.ended_after = None;
+                if let Some(d) = &mut status.decided_by {
+                    d.stuck = Some(stuck.clone());
+                }
+                // The checks as they stand, but the deciding one as the end would settle
+                // it: a Failed verdict always names a failed check (the page's ✗, `rtnav
+                // check`'s reason); it is open again once the robot is set going.
+                let mut checks = self.status_now().checks;
+                if let Some(d) = &status.decided_by
+                    && let (Some(own), Some(settled)) =
+                        (checks.get_mut(d.check), status.checks.get(d.check))
+                {
+                    own.state = settled.state;
+                }
+                return ExerciseStatus { checks, ..status };
+            }
+        }
+        self.status_now()
+    }
+
+    /// [`Self::status`] without looking ahead.
+    fn status_now(&self) -> ExerciseStatus {
         let mut checks: Vec<CheckStatus> = self
             .exercise
             .checks
@@ -539,13 +610,19 @@ impl ExerciseWatch {
             changed: Vec::new(),
             warned: self.warned.clone(),
         });
+        let failed = self
+            .first_failed
+            .or_else(|| checks.iter().position(|c| c.state == CheckState::Failed));
         let verdict = match (self.started_ns, self.ended_ns) {
             (None, _) => Verdict::Waiting,
+            (Some(_), None) if failed.is_some() => Verdict::Failed,
             (Some(_), None) => Verdict::Running,
-            (Some(_), Some(_)) if checks.iter().all(|c| c.state == CheckState::Passed) => {
-                Verdict::Passed
-            }
+            (Some(_), Some(_)) if failed.is_none() => Verdict::Passed,
             _ => Verdict::Failed,
+        };
+        let decided_by = match verdict {
+            Verdict::Failed => failed.map(|check| DecidedBy { check, stuck: None }),
+            _ => None,
         };
         ExerciseStatus {
             task: self.exercise.task.clone(),
@@ -553,9 +630,36 @@ impl ExerciseWatch {
             actions: self.exercise.actions.clone(),
             checks,
             verdict,
+            decided_by,
             started_at: self.started_ns.map(|s| s as f64 * 1e-9),
             ended_after: self.ended_ns.map(|e| self.since_start(e)),
         }
+    }
+}
+
+/// Left alone, why the robot of `system` cannot move on (spec §7 Decision 0.4): it stands,
+/// and its status is one that nothing the system does on its own changes.
+fn stuck(system: &System) -> Option<Stuck> {
+    match system.status() {
+        Status::ComponentError {
+            component,
+            motion: Motion::Stands,
+            ..
+        } => Some(Stuck::ComponentError { component }),
+        Status::Inactive {
+            component,
+            motion: Motion::Stands,
+        } => Some(Stuck::Inactive { component }),
+        Status::NoRoute {
+            motion: Motion::Stands,
+            ..
+        } => Some(Stuck::NoRoute),
+        Status::StoppedOffGoal { .. } => Some(Stuck::StoppedOffGoal),
+        Status::Halted {
+            motion: Motion::Stands,
+            ..
+        } => Some(Stuck::Halted),
+        _ => None,
     }
 }
 

@@ -204,6 +204,12 @@ impl History {
         self.end_ns = self.end_ns.min(t_ns);
     }
 
+    /// Whether recorded requests are still to be replayed (after a seek back, or in a
+    /// loaded replay).
+    pub fn requests_ahead(&self) -> bool {
+        self.next < self.inputs.len()
+    }
+
     /// The next recorded request due at `now_ns`, taken.
     pub fn take_due(&mut self, now_ns: u64) -> Option<Input> {
         let timed = self.inputs.get(self.next)?;

@@ -249,10 +249,11 @@ impl Replay {
             Some(serde_json::Value::Number(n)) if n.as_u64() == Some(u64::from(REPLAY_VERSION)) => {
             }
             other => {
-                return Err(bad(format!(
-                    "version {} (this build reads version {REPLAY_VERSION})",
-                    other.map_or("missing".to_owned(), |v| excerpt(&v.to_string()))
-                )));
+                return Err(SessionError::ReplayVersion {
+                    found: other.map_or("missing".to_owned(), |v| excerpt(&v.to_string())),
+                    reads: REPLAY_VERSION,
+                }
+                .into());
             }
         }
         let file: File = json_text::parse(text).map_err(|e| bad(format!("malformed: {e}")))?;

@@ -17,6 +17,7 @@ pub(super) mod graph;
 pub(super) mod inspect;
 pub(super) mod mission;
 pub(super) mod parameter_warning;
+mod placement;
 pub(super) mod record;
 pub(super) mod rest;
 pub(super) mod robot;

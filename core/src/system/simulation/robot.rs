@@ -81,6 +81,7 @@ impl System {
 
     /// Carries out one request (the one interpreter of [`Input`]); a refused one changes nothing.
     pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
+        super::placement::check(input, &self.wiring, &self.mission)?;
         let w = &mut self.wiring;
         let result = match input {
             Input::SetPosition {

@@ -111,6 +111,28 @@ pub enum SystemError {
         /// The request.
         call: &'static str,
     },
+    /// A request that would set the robot moving before it has a pose (spec §5 "Physics",
+    /// Decision 0.4 "no pose until placed"): PhysicsSim is not activated until a start is
+    /// placed (`SetPosition`, or a scenario's start).
+    #[error("the robot has no pose yet, so PhysicsSim cannot be activated (place a start first)")]
+    NotPlaced {
+        /// The request (`Activate` or `ActivateAll`); the words leave it to the one who made
+        /// it (the page says "Activate all refused: …").
+        call: &'static str,
+    },
+    /// A `MapUpdate` that would put an obstacle under the robot's body (spec §5 "Physics",
+    /// Decision 0.4 "an edit on the body"): refused as a whole, as every refused
+    /// `MapUpdate` is (spec §2), naming the first such cell.
+    #[error(
+        "cell ({x}, {y}) lies under the robot's body, so no obstacle can be put there (move the \
+         robot or paint around it)"
+    )]
+    UnderRobot {
+        /// Column of the cell.
+        x: i64,
+        /// Row of the cell.
+        y: i64,
+    },
     /// A number that must be finite (and, for times, non-negative) is not.
     #[error("{what} = {value} must be finite{}", if *non_negative { " and ≥ 0" } else { "" })]
     BadNumber {
@@ -206,6 +228,19 @@ pub enum SessionError {
     BadReplay {
         /// Why.
         reason: String,
+    },
+    /// A replay file of a format version this build does not read (an rtnav of another
+    /// release wrote it): what it is and what to do.
+    #[error(
+        "replay: this file is an rtnav replay of format version {found}, written by another \
+         release of rtnav; this one reads version {reads}. Open it with the rtnav that wrote \
+         it, or run the scenario again here and download a new replay"
+    )]
+    ReplayVersion {
+        /// The version the file gives (`missing` when it gives none).
+        found: String,
+        /// The version this build reads.
+        reads: u32,
     },
     /// A replay of a scenario whose content has changed since the replay was recorded (its
     /// file or its map's files): the run would be judged against something else, so it is

@@ -123,8 +123,10 @@ impl Session {
 
     /// The exercise watch reads what happened (after time ran or a request was made).
     pub(super) fn look(&mut self) {
+        let more_to_come = self.state.timeline.pending() > 0
+            || self.history.as_ref().is_some_and(|h| h.requests_ahead());
         if let Some(w) = &mut self.state.exercise {
-            w.observe(&self.state.system);
+            w.observe(&self.state.system, more_to_come);
         }
     }
 

@@ -317,12 +317,14 @@ impl Session {
         Ok(self.state.system.component_state(component))
     }
 
-    /// A request on every component (`ActivateAll`, `DeactivateAll`, `ResetAll`, never
-    /// refused); returns the system's state.
-    pub fn all(&mut self, input: &Input) -> SystemState {
-        // Requests on all components are never refused; a refusal would be logged.
-        let _ = self.apply(input);
-        self.state.system.state()
+    /// A request on every component (`ActivateAll`, `DeactivateAll`, `ResetAll`); returns
+    /// the system's state. `ActivateAll` before the robot is placed is refused and changes
+    /// nothing (spec §5 "Physics", Decision 0.4: [`SystemError::NotPlaced`]).
+    ///
+    /// [`SystemError::NotPlaced`]: crate::errors::SystemError::NotPlaced
+    pub fn all(&mut self, input: &Input) -> crate::Result<SystemState> {
+        self.apply(input)?;
+        Ok(self.state.system.state())
     }
 
     /// Makes the next execution of the component named `name` fail, for `reason`.
