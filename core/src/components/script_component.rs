@@ -58,7 +58,7 @@ impl ScriptPlace {
         Self::ALL.into_iter().find(|p| p.name() == name)
     }
 
-    fn ports(self) -> (Vec<Box<dyn ScriptIn>>, Vec<Box<dyn ScriptOut>>) {
+    fn ports(self) -> PortSet {
         match self {
             Self::DriveControl => (
                 vec![
@@ -91,6 +91,9 @@ impl ScriptPlace {
         }
     }
 }
+
+/// A place's in-ports and out-ports.
+type PortSet = (Vec<Box<dyn ScriptIn>>, Vec<Box<dyn ScriptOut>>);
 
 /// The configuration of the component a script stands in for: the same parameters.
 #[derive(Debug, Clone, PartialEq)]

@@ -72,6 +72,22 @@ pub struct Exercise {
     pub actions: Vec<String>,
     /// What is checked, in the order shown.
     pub checks: Vec<Check>,
+    /// In an exercise with code (spec §8), the component the student writes and the
+    /// template the student starts from.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub script: Option<ScriptTask>,
+}
+
+/// The component a student writes in an exercise with code (spec §8), and where its
+/// template is.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct ScriptTask {
+    /// DriveControl or MotorControl.
+    pub component: ComponentKind,
+    /// The template's path, from the repository's root (a `.rhai` file).
+    pub template: String,
 }
 
 /// One check of an exercise.

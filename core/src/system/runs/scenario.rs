@@ -266,6 +266,22 @@ pub enum ScenarioEvent {
         /// The reason it fails with.
         reason: String,
     },
+    /// An operator's Reset of `component` (seed 003: Error → Inactive), as the RTC tab's
+    /// button; refused, and logged, if it is not in Error.
+    Reset {
+        /// Seconds.
+        at: f64,
+        /// Which component.
+        component: ComponentKind,
+    },
+    /// An operator's Activate of `component` (Inactive → Active); refused, and logged, if
+    /// it is not Inactive.
+    Activate {
+        /// Seconds.
+        at: f64,
+        /// Which component.
+        component: ComponentKind,
+    },
 }
 
 fn one() -> i16 {
@@ -280,7 +296,9 @@ impl ScenarioEvent {
             | Self::Goal { at, .. }
             | Self::SafeMode { at }
             | Self::Clear { at }
-            | Self::Fault { at, .. } => *at,
+            | Self::Fault { at, .. }
+            | Self::Reset { at, .. }
+            | Self::Activate { at, .. } => *at,
         }
     }
 }
@@ -521,7 +539,9 @@ impl Scenario {
                 }
                 ScenarioEvent::SafeMode { .. }
                 | ScenarioEvent::Clear { .. }
-                | ScenarioEvent::Fault { .. } => {}
+                | ScenarioEvent::Fault { .. }
+                | ScenarioEvent::Reset { .. }
+                | ScenarioEvent::Activate { .. } => {}
             }
         }
         self.rates
@@ -619,6 +639,12 @@ impl ScenarioEvent {
             } => Input::InjectFault {
                 component: *component,
                 reason: reason.clone(),
+            },
+            Self::Reset { component, .. } => Input::Reset {
+                component: *component,
+            },
+            Self::Activate { component, .. } => Input::Activate {
+                component: *component,
             },
         }
     }

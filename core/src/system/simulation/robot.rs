@@ -78,7 +78,6 @@ impl System {
     }
 
     // ------------------------------------------------------------------ inputs
-
     /// Carries out one request (the one interpreter of [`Input`]); a refused one changes nothing.
     pub fn apply(&mut self, input: &Input) -> crate::Result<()> {
         super::placement::check(input, &self.wiring, &self.mission)?;
