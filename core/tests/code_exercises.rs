@@ -51,7 +51,10 @@ fn write_motor_controls_pd_law() {
     // Positive feedback: the wheels run away and the robot hits the fence at once.
     let sign = check(name, Some("ex_code_pd.wrong_sign.rhai"));
     assert_eq!(state(&sign, reach), CheckState::Failed, "{sign}");
-    assert_eq!(state(&sign, |c| matches!(c, Check::NoBump)), CheckState::Failed);
+    assert_eq!(
+        state(&sign, |c| matches!(c, Check::NoBump)),
+        CheckState::Failed
+    );
     // P alone: limp, the speed is never reached.
     let limp = check(name, Some("ex_code_pd.wrong_no_d.rhai"));
     assert_eq!(state(&limp, reach), CheckState::Failed, "{limp}");

@@ -13,10 +13,10 @@
 //! reported with why, never counted as an arrival, and a failure of the soak. Either way the
 //! system has said the goal is done, and the next goal follows.
 //!
-//! This is one of the two files of the tools that use `System` (the fuzzer's system targets
-//! are the other). Its requests are [`Input`]s (`ActivateAll`, `ResetAll`, `SetGoal`,
-//! `MapUpdate`) through [`System::apply`]; it reads the record (events, telemetry), the
-//! statistics, the state, the robot's pose and the map.
+//! This is one of the three files of the tools that use `System` (the fuzzer's system
+//! targets and its `script` target are the others). Its requests are [`Input`]s
+//! (`ActivateAll`, `ResetAll`, `SetGoal`, `MapUpdate`) through [`System::apply`]; it reads
+//! the record (events, telemetry), the statistics, the state, the robot's pose and the map.
 //!
 //! **Memory**: the bytes live on the heap (the counting allocator, [`crate::alloc`]) and the
 //! resident set size (`/proc/self/statm`, Linux) at the start, once the bounded histories are

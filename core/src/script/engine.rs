@@ -19,11 +19,13 @@ pub const OPERATIONS: u64 = 200_000;
 /// Nested calls one action may make.
 pub const CALL_DEPTH: usize = 32;
 /// Largest string, in bytes.
-pub const STRING_BYTES: usize = 64 * 1024;
-/// Largest array, in items.
-pub const ARRAY_ITEMS: usize = 10_000;
+pub const STRING_BYTES: usize = 16 * 1024;
+/// Largest array, in items (nested arrays counted in). The engine measures a value again
+/// after every change, so the cost of growing one is quadratic in this bound: it is what
+/// keeps an action that grows a value within a millisecond or so a step.
+pub const ARRAY_ITEMS: usize = 1_000;
 /// Largest map, in entries.
-pub const MAP_ENTRIES: usize = 1_000;
+pub const MAP_ENTRIES: usize = 256;
 
 /// The hashing seed: fixed, so the engine's hashes are the same in every run and build.
 const HASHING_SEED: [u64; 4] = [0x7274_6e61_7600_0001, 0x5345_4544_3030_3300, 3, 2];

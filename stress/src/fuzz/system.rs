@@ -1,7 +1,8 @@
-//! Fuzz targets through the whole system's public API (one of the two files of the tools that
-//! use `System`; the soak is the other): the `.conf` bundle (`Input::LoadConf`), share
-//! tokens (`Session::decode_token`, `Session::apply_share`), hostile requests — every
-//! [`Input`], through [`System::apply`] — and random lifecycle sequences.
+//! Fuzz targets through the whole system's public API (one of the three files of the tools
+//! that use `System`; the `script` target, `scripts.rs`, and the soak are the others): the
+//! `.conf` bundle (`Input::LoadConf`), share tokens (`Session::decode_token`,
+//! `Session::apply_share`), hostile requests — every [`Input`], through [`System::apply`] —
+//! and random lifecycle sequences.
 //!
 //! The calls are checked against a twin system: each operation goes to system A; if A refuses
 //! it (`Err`), B never gets it and the two must be identical at once ([`fingerprint`]); if A

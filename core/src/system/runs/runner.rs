@@ -329,6 +329,7 @@ impl ScenarioRun {
             self.timeline.run(&mut self.system, 1);
             self.outcome = judge(
                 &self.system,
+                self.timeline.pending() > 0,
                 &mut self.event_cursor,
                 &mut self.refused,
                 &mut self.still_since,
@@ -399,9 +400,12 @@ impl ScenarioRun {
 /// at rest within the goal's tolerances), a bump, a component in Error, resting for
 /// [`STILL_NS`] off the goal after DriveControl finished ([`Status::StoppedOffGoal`]) or
 /// after a planning failure, a refused request or a halt, or the time limit. `cursor` counts the events read, `refused` holds the last refused
-/// request, `still_since` when the robot came to stand.
+/// request, `still_since` when the robot came to stand. While `events_to_come` (the
+/// scenario's timeline has events still to come: an operator's Reset, say), a component in
+/// Error does not end the run.
 pub fn judge(
     system: &System,
+    events_to_come: bool,
     cursor: &mut u64,
     refused: &mut Option<EventKind>,
     still_since: &mut Option<u64>,
@@ -433,7 +437,7 @@ pub fn judge(
     if end.is_some() {
         return end;
     }
-    if system.state() == SystemState::Error {
+    if system.state() == SystemState::Error && !events_to_come {
         let ec = system.wiring().execution_context();
         let reason = ComponentKind::ALL
             .into_iter()
