@@ -52,6 +52,7 @@ fn the_pages_set_up_driven_to_the_end_gives_the_runners_trace() {
             session.advance(16.0);
             if let Some(o) = judge(
                 session.system(),
+                session.timeline().pending() > 0,
                 &mut cursor,
                 &mut refused,
                 &mut still,

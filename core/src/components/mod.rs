@@ -97,9 +97,17 @@ pub use global_path_planning::{GlobalPathPlanning, GlobalPathPlanningParams, Pla
 mod map_builder;
 mod map_maintenance;
 mod samples;
+#[cfg(not(feature = "script"))]
+mod script_absent;
+#[cfg(feature = "script")]
 mod script_component;
+mod script_place;
 
-pub use script_component::{ScriptComponent, ScriptPlace};
+#[cfg(not(feature = "script"))]
+pub use script_absent::ScriptComponent;
+#[cfg(feature = "script")]
+pub use script_component::ScriptComponent;
+pub use script_place::ScriptPlace;
 
 pub use map_builder::{MapBuilder, SetMapMessage};
 pub use map_maintenance::MapMaintenance;

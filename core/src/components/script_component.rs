@@ -17,7 +17,7 @@
 
 use rhai::{Dynamic, Map};
 
-use super::{DriveControlParams, MotorControlParams};
+use super::{DriveControlParams, MotorControlParams, ScriptPlace};
 use crate::interfaces::ControlPoints;
 use crate::rtc::{
     Component, ComponentError, ConfigAccess, Configuration, InPort, OutPort, PortView, ReturnCode,
@@ -27,73 +27,42 @@ use crate::script::{
     Console, ConsoleKind, Io, Program, Rtc, ScriptError, ScriptIn, ScriptOut, script_name,
 };
 
-/// The places of the system a script can take (spec §8, Decision 0.4 "what can be
-/// replaced").
-#[derive(
-    Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, serde::Serialize, serde::Deserialize,
-)]
-#[cfg_attr(feature = "typescript", derive(ts_rs::TS))]
-pub enum ScriptPlace {
-    /// DriveControl: control points and the current position in, `TargetVelocity` out.
-    DriveControl,
-    /// MotorControl: the target velocity and the wheel angles in, `Torque` out (seed 002's
-    /// PD law).
-    MotorControl,
-}
-
-impl ScriptPlace {
-    /// Every place.
-    pub const ALL: [Self; 2] = [Self::DriveControl, Self::MotorControl];
-
-    /// The component's name (`MotorControl`), as a script declares it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::DriveControl => "DriveControl",
-            Self::MotorControl => "MotorControl",
-        }
-    }
-
-    /// The place a script's declaration names.
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|p| p.name() == name)
-    }
-
-    fn ports(self) -> PortSet {
-        match self {
-            Self::DriveControl => (
-                vec![
-                    Box::new(InPort::<ControlPoints>::new("InControlPoints")),
-                    Box::new(InPort::<TimedPosition>::new("InCurrentPosition")),
-                ],
-                vec![
-                    Box::new(OutPort::<TimedVelocity>::new("TargetVelocity")),
-                    Box::new(OutPort::<TimedDouble>::new("OutDeviating")),
-                    Box::new(OutPort::<TimedDouble>::new("SafetyStop")),
-                ],
-            ),
-            Self::MotorControl => (
-                vec![
-                    Box::new(InPort::<TimedVelocity>::new("TargetVelocity")),
-                    Box::new(InPort::<TimedDoubleSeq>::new("InCurrentWheelAngle")),
-                    Box::new(InPort::<TimedDoubleSeq>::new("InSimulatedPosition")),
-                ],
-                vec![
-                    Box::new(OutPort::<TimedDoubleSeq>::new("Torque")),
-                    Box::new(OutPort::<TimedDoubleSeq>::new("OutCurrentWheelAngle")),
-                    Box::new(OutPort::<TimedDoubleSeq>::new(
-                        "OutSimulatedPositionToInventGUI",
-                    )),
-                    Box::new(OutPort::<TimedDoubleSeq>::new(
-                        "OutSimulatedPositionToLocalization",
-                    )),
-                ],
-            ),
-        }
-    }
-}
-
 /// A place's in-ports and out-ports.
 type PortSet = (Vec<Box<dyn ScriptIn>>, Vec<Box<dyn ScriptOut>>);
+
+/// The ports of `place`'s component, unconnected.
+fn ports(place: ScriptPlace) -> PortSet {
+    match place {
+        ScriptPlace::DriveControl => (
+            vec![
+                Box::new(InPort::<ControlPoints>::new("InControlPoints")),
+                Box::new(InPort::<TimedPosition>::new("InCurrentPosition")),
+            ],
+            vec![
+                Box::new(OutPort::<TimedVelocity>::new("TargetVelocity")),
+                Box::new(OutPort::<TimedDouble>::new("OutDeviating")),
+                Box::new(OutPort::<TimedDouble>::new("SafetyStop")),
+            ],
+        ),
+        ScriptPlace::MotorControl => (
+            vec![
+                Box::new(InPort::<TimedVelocity>::new("TargetVelocity")),
+                Box::new(InPort::<TimedDoubleSeq>::new("InCurrentWheelAngle")),
+                Box::new(InPort::<TimedDoubleSeq>::new("InSimulatedPosition")),
+            ],
+            vec![
+                Box::new(OutPort::<TimedDoubleSeq>::new("Torque")),
+                Box::new(OutPort::<TimedDoubleSeq>::new("OutCurrentWheelAngle")),
+                Box::new(OutPort::<TimedDoubleSeq>::new(
+                    "OutSimulatedPositionToInventGUI",
+                )),
+                Box::new(OutPort::<TimedDoubleSeq>::new(
+                    "OutSimulatedPositionToLocalization",
+                )),
+            ],
+        ),
+    }
+}
 
 /// The configuration of the component a script stands in for: the same parameters.
 #[derive(Debug, Clone, PartialEq)]
@@ -192,7 +161,7 @@ impl ScriptComponent {
             }
             target.restore_effective(&from.effective_values());
         }
-        let (ins, outs) = place.ports();
+        let (ins, outs) = ports(place);
         Self {
             name: name.to_owned(),
             place,
@@ -260,7 +229,7 @@ impl ScriptComponent {
     }
 
     /// The newest sample of in-port `name` (seed name), as a map, not marked read.
-    pub fn peek_in(&self, name: &str) -> Option<Map> {
+    fn peek_in(&self, name: &str) -> Option<Map> {
         self.ins
             .iter()
             .find(|(_, p)| p.name() == name)
@@ -268,11 +237,39 @@ impl ScriptComponent {
     }
 
     /// The last sample written on out-port `name` (seed name), as a map.
-    pub fn last_out(&self, name: &str) -> Option<Map> {
+    fn last_out(&self, name: &str) -> Option<Map> {
         self.outs
             .iter()
             .find(|(_, p)| p.name() == name)
             .and_then(|(_, p)| p.last())
+    }
+
+    /// In DriveControl's place: the last `TargetVelocity` written, `(vx, w)`.
+    pub fn last_command(&self) -> Option<(f64, f64)> {
+        self.last_out("TargetVelocity")
+            .map(|m| (map_number(&m, "vx"), map_number(&m, "w")))
+    }
+
+    /// In DriveControl's place: the last `OutDeviating` written \[m\].
+    pub fn last_deviation(&self) -> Option<f64> {
+        self.last_out("OutDeviating")
+            .map(|m| map_number(&m, "data"))
+    }
+
+    /// In DriveControl's place: the last point of the newest control points received.
+    pub fn path_end(&self) -> Option<(f64, f64)> {
+        let points = self.peek_in("InControlPoints")?;
+        let points = points.get("points")?.read_lock::<rhai::Array>()?.clone();
+        let last = points.last()?.read_lock::<Map>()?.clone();
+        Some((map_number(&last, "x"), map_number(&last, "y")))
+    }
+
+    /// In MotorControl's place: the last `Torque` written, at the wheel ids `[left, right]`.
+    pub fn last_torque(&self, left: usize, right: usize) -> Option<[f64; 2]> {
+        let m = self.last_out("Torque")?;
+        let data = m.get("data")?.read_lock::<rhai::Array>()?.clone();
+        let at = |i: usize| data.get(i).and_then(|v| v.as_float().ok());
+        Some([at(left)?, at(right)?])
     }
 
     /// Runs `action` (module documentation).
@@ -478,4 +475,9 @@ impl Component for ScriptComponent {
     fn on_rate_changed(&mut self, tick: &Tick) -> ReturnCode {
         self.run("on_rate_changed", Some(tick))
     }
+}
+
+/// A number field of a sample map (0 where it has none: the map was checked when written).
+fn map_number(map: &Map, key: &str) -> f64 {
+    map.get(key).and_then(|v| v.as_float().ok()).unwrap_or(0.0)
 }

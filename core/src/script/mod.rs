@@ -10,15 +10,31 @@
 //! - [`Console`]: what the script prints and its errors, bounded, repeats folded;
 //! - [`ScriptError`]: what goes wrong, at its action, line and column.
 
+//!
+//! Without the feature `script` (the page's first download) there is no engine: a script is
+//! refused when it is compiled, saying so, and the console and the errors are all that is
+//! left of this module.
+
+#[cfg(not(feature = "script"))]
+mod absent;
 mod console;
+#[cfg(feature = "script")]
 pub mod engine;
 mod error;
+#[cfg(feature = "script")]
 mod io;
+#[cfg(feature = "script")]
 mod program;
+#[cfg(feature = "script")]
 mod values;
 
+#[cfg(not(feature = "script"))]
+pub use absent::Program;
 pub use console::{CONSOLE_LINES, Console, ConsoleKind, ConsoleLine, LINE_CHARS};
 pub use error::ScriptError;
+#[cfg(feature = "script")]
 pub use io::{Io, Rtc, ScriptIn, ScriptOut, script_name};
+#[cfg(feature = "script")]
 pub use program::{ACTIONS, DECLARATION, Program};
+#[cfg(feature = "script")]
 pub use values::ScriptSample;

@@ -58,12 +58,7 @@ impl Wiring {
         };
         let g = self.motor_geometry();
         let torque = script
-            .and_then(|s| s.last_out("Torque"))
-            .and_then(|m| {
-                let data = m.get("data")?.read_lock::<rhai::Array>()?.clone();
-                let at = |i: usize| data.get(i).and_then(|v| v.as_float().ok());
-                Some([at(g.left_wheel_id)?, at(g.right_wheel_id)?])
-            })
+            .and_then(|s| s.last_torque(g.left_wheel_id, g.right_wheel_id))
             .unwrap_or([0.0; 2]);
         MotorReadings {
             target_wheel_angle: pair("target_wheel_angle"),
@@ -79,8 +74,8 @@ impl Wiring {
             return d.pursuit().last_command();
         }
         self.script(ComponentKind::DriveControl)
-            .and_then(|s| s.last_out("TargetVelocity"))
-            .map_or((0.0, 0.0), |m| (map_number(&m, "vx"), map_number(&m, "w")))
+            .and_then(ScriptComponent::last_command)
+            .unwrap_or((0.0, 0.0))
     }
 
     /// DriveControl's deviation from the path \[m\]: the built-in's, or the last
@@ -90,8 +85,7 @@ impl Wiring {
             return d.deviation();
         }
         self.script(ComponentKind::DriveControl)
-            .and_then(|s| s.last_out("OutDeviating"))
-            .map(|m| map_number(&m, "data"))
+            .and_then(ScriptComponent::last_deviation)
     }
 
     /// The last control point DriveControl holds: the end of the built-in's path, or of the
@@ -103,12 +97,7 @@ impl Wiring {
                 .polyline()
                 .and_then(|l| l.points().last().copied());
         }
-        let points = self
-            .script(ComponentKind::DriveControl)?
-            .peek_in("InControlPoints")?;
-        let points = points.get("points")?.read_lock::<rhai::Array>()?.clone();
-        let last = points.last()?.read_lock::<rhai::Map>()?.clone();
-        Some((map_number(&last, "x"), map_number(&last, "y")))
+        self.script(ComponentKind::DriveControl)?.path_end()
     }
 
     /// The built-in DriveControl's phase (`None` while a script is in its place: a script has
@@ -171,6 +160,8 @@ impl Wiring {
     /// `on_initialize` runs now (Created → Inactive). Refused, changing nothing, for a place
     /// no script can take, a script that declares another component, a component that is
     /// Active, or a failing `on_initialize`.
+    // Without the feature `script`, `program` cannot exist: what follows is never reached.
+    #[cfg_attr(not(feature = "script"), allow(unreachable_code, unused_variables))]
     pub fn load_script(&mut self, kind: ComponentKind, program: Program) -> crate::Result<()> {
         let place = script_place(kind)?;
         if let Some(declared) = program.declared()
@@ -264,9 +255,4 @@ fn script_place(kind: ComponentKind) -> crate::Result<ScriptPlace> {
         }
         .into()
     })
-}
-
-/// A number field of a sample map (0 where it has none: the map was checked when written).
-fn map_number(map: &rhai::Map, key: &str) -> f64 {
-    map.get(key).and_then(|v| v.as_float().ok()).unwrap_or(0.0)
 }
