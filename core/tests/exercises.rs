@@ -12,7 +12,8 @@ use rtnav::system::{
     Session, Stuck, Unit, Verdict, check_exercise,
 };
 
-const EXERCISES: [&str; 9] = [
+/// Every exercise; the ones with code (`ex_code_*`) are judged in `code_exercises.rs`.
+const EXERCISES: [&str; 12] = [
     "ex_parking_posture",
     "ex_route_remake",
     "ex_door_dmin",
@@ -22,6 +23,9 @@ const EXERCISES: [&str; 9] = [
     "ex_model_offset",
     "ex_fault_recovery",
     "ex_speed_limit",
+    "ex_code_pd",
+    "ex_code_drive",
+    "ex_code_recover",
 ];
 
 fn scenario(name: &str) -> Scenario {
