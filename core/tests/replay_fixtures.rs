@@ -5,7 +5,8 @@
 //!
 //! There is one replay per scenario with an exercise (`fixtures/scenarios/ex_*.json`): the
 //! reference solution (`fixtures/exercises/NAME.solution.conf`, loaded as the page loads a
-//! `.conf`) driven to its verdict, which must pass; seed 003's fault exercise is recovered
+//! `.conf`; in an exercise with code, `fixtures/scripts/exercises/NAME.solution.rhai`, loaded as
+//! the page loads a script) driven to its verdict, which must pass; seed 003's fault exercise is recovered
 //! with Reset and Activate on DriveControl, and once more left in Error, which must fail.
 //!
 //! **Re-blessing.** When a change of behaviour changes traces, raise
@@ -112,6 +113,24 @@ fn record(recipe: &Recipe) -> String {
     ));
     if let Ok(text) = std::fs::read_to_string(&conf) {
         session.apply(&Input::LoadConf { text }).unwrap();
+    }
+    // An exercise with code: the student's script loaded as the page loads it (spec §8); the
+    // replay carries its text.
+    let script = format!("{}.{}.rhai", recipe.scenario, recipe.variant);
+    if let Ok(source) =
+        std::fs::read_to_string(root().join("fixtures/scripts/exercises").join(&script))
+    {
+        let task = scenario(&recipe.scenario).exercise.and_then(|e| e.script);
+        let component = task
+            .expect("an exercise with code names its component")
+            .component;
+        session
+            .apply(&Input::LoadScript {
+                component,
+                name: script,
+                source,
+            })
+            .unwrap();
     }
     session.apply(&Input::ActivateAll).unwrap();
     let drive = ComponentKind::DriveControl;

@@ -178,18 +178,19 @@ fn the_exercise_read_out_says_when_the_clock_stands_still() {
     assert_eq!(verdict(&s), Verdict::Waiting);
     s.apply(&Input::ActivateAll).unwrap();
     let view = s.exercise_view().unwrap();
-    // As given, the door has no route: decided at once (spec §7 Decision 0.4), the clock
-    // paused all the same.
-    assert_eq!(view.status.verdict, Verdict::Failed);
+    // As given, the door has no route, but nothing is decided at the drive's very start
+    // (spec §7 Decision 0.4): the clock is paused.
+    assert_eq!(view.status.verdict, Verdict::Running);
     assert!(view.status.ended_after.is_none());
     assert!(view.paused);
     assert!(s.telemetry().paused);
     let t = s.system().time_ns();
     s.advance(100.0);
     assert_eq!(s.system().time_ns(), t, "nothing runs while paused");
-    // Run: the read-out and the clock agree again.
+    // Run: the read-out and the clock agree again, and with no route the run is decided.
     s.set_paused(false);
     assert!(!s.exercise_view().unwrap().paused);
-    s.advance(100.0);
+    s.advance(1000.0);
     assert!(s.system().time_ns() > t);
+    assert_eq!(verdict(&s), Verdict::Failed);
 }

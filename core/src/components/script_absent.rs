@@ -50,6 +50,10 @@ impl ScriptComponent {
     pub fn last_command(&self) -> Option<(f64, f64)> {
         match *self {}
     }
+    /// Since when it has commanded nothing.
+    pub fn standing_since(&self) -> Option<u64> {
+        match *self {}
+    }
     /// The last `OutDeviating` written.
     pub fn last_deviation(&self) -> Option<f64> {
         match *self {}

@@ -108,6 +108,8 @@ pub struct ScriptComponent {
     tick: Tick,
     /// `on_error` failed: not run again until a Reset.
     error_quiet: bool,
+    /// In DriveControl's place: since when \[ns\] every `TargetVelocity` written was zero.
+    standing_since: Option<u64>,
     last_error: Option<ScriptError>,
 }
 
@@ -132,6 +134,7 @@ impl Clone for ScriptComponent {
             console: self.console.clone(),
             tick: self.tick,
             error_quiet: self.error_quiet,
+            standing_since: self.standing_since,
             last_error: self.last_error.clone(),
         }
     }
@@ -179,6 +182,7 @@ impl ScriptComponent {
             console: Console::default(),
             tick: now,
             error_quiet: false,
+            standing_since: None,
             last_error: None,
         }
     }
@@ -248,6 +252,12 @@ impl ScriptComponent {
     pub fn last_command(&self) -> Option<(f64, f64)> {
         self.last_out("TargetVelocity")
             .map(|m| (map_number(&m, "vx"), map_number(&m, "w")))
+    }
+
+    /// In DriveControl's place: since when \[ns\] it has commanded nothing (every
+    /// `TargetVelocity` written zero); `None` while it commands motion or before it wrote one.
+    pub fn standing_since(&self) -> Option<u64> {
+        self.standing_since
     }
 
     /// In DriveControl's place: the last `OutDeviating` written \[m\].
@@ -433,13 +443,23 @@ impl Component for ScriptComponent {
     }
     fn on_activated(&mut self, tick: &Tick) -> ReturnCode {
         self.last_error = None;
+        self.standing_since = None;
         self.run("on_activated", Some(tick))
     }
     fn on_deactivated(&mut self, tick: &Tick) -> ReturnCode {
         self.run("on_deactivated", Some(tick))
     }
     fn on_execute(&mut self, tick: &Tick) -> ReturnCode {
-        self.run("on_execute", Some(tick))
+        let r = self.run("on_execute", Some(tick));
+        if self.place == ScriptPlace::DriveControl {
+            self.standing_since = match self.last_command() {
+                Some((v, w)) if v == 0.0 && w == 0.0 => {
+                    Some(self.standing_since.unwrap_or(tick.time_ns))
+                }
+                _ => None,
+            };
+        }
+        r
     }
     fn on_state_update(&mut self, tick: &Tick) -> ReturnCode {
         self.run("on_state_update", Some(tick))

@@ -66,8 +66,7 @@ export function createToolbar(root, clockRoot, mapRoot, app) {
   /** @param {string} tool */
   const showTool = (tool) => {
     for (const [t, b] of toolButtons) b.setAttribute('aria-pressed', String(t === tool));
-    // Hidden in place (`visibility`), never taken out of the layout: the map stays put.
-    brushBox.dataset.shown = String(tool === 'paint' || tool === 'erase');
+    brushBox.hidden = !(tool === 'paint' || tool === 'erase');
   };
   app.on('tool', showTool);
   showTool(app.ui.tool);

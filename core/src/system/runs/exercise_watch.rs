@@ -66,6 +66,11 @@ pub struct ExerciseWatch {
     stuck: Option<Stuck>,
 }
 
+/// How long the drive must have run before a run that looks stuck is decided \[ns\]: at
+/// the drive's very start (an activation before the planners have run, a paused clock)
+/// nothing is decided.
+pub const STUCK_NS: u64 = 500_000_000;
+
 impl ExerciseWatch {
     /// Watches `exercise` on a system built with the scenario's own configuration,
     /// `baseline` ([`parameter_values`] of it); the exercise ends at the latest
@@ -195,7 +200,7 @@ impl ExerciseWatch {
                 self.deadlines(now);
             }
             self.note_failure();
-            self.stuck = if more_to_come || self.ended() {
+            self.stuck = if more_to_come || self.ended() || now.saturating_sub(start) < STUCK_NS {
                 None
             } else {
                 stuck(system)

@@ -457,7 +457,7 @@ pub fn judge(
     // A script in DriveControl's place has no phase: it is idle while it commands nothing.
     let idle = match wiring.drive_phase() {
         Some(phase) => phase == DrivePhase::Idle,
-        None => wiring.drive_command() == (0.0, 0.0),
+        None => wiring.drive_stands(),
     };
     let failure = system.mission().failure().or(refused.as_ref()).cloned();
     let off_goal = match system.status() {

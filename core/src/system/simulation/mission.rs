@@ -121,7 +121,7 @@ impl Mission {
             let at_goal = match wiring.drive_phase() {
                 Some(phase) => matches!(phase, DrivePhase::FinalTurn | DrivePhase::Arrived),
                 // A script in DriveControl's place: at the goal once it commands nothing.
-                None => wiring.drive_command() == (0.0, 0.0),
+                None => wiring.drive_stands(),
             };
             if at_goal
                 && self.approach_heading_error.is_none()
@@ -230,7 +230,7 @@ fn drive_done_for(wiring: &Wiring, goal: Pose) -> bool {
         Some(phase) => phase == DrivePhase::Arrived,
         // A script in DriveControl's place has no phase: it is done once it commands nothing
         // (the arrival itself is the system's fact: at rest, within the tolerances).
-        None => wiring.drive_command() == (0.0, 0.0),
+        None => wiring.drive_stands(),
     };
     done && path_ends_at(wiring, goal)
 }

@@ -517,6 +517,13 @@ impl Wiring {
     /// tables): when the wiring is made, and in an unconnected copy ([`Wiring::try_clone`]).
     /// Fails, naming the port, if a component lacks one the table names.
     pub(super) fn connect(&mut self) -> crate::Result<()> {
+        self.connect_handing_over(None)
+    }
+
+    /// [`Wiring::connect`]; the in-ports of `fresh` (a component just put in its place) are
+    /// handed each connected out-port's newest sample, as the component it replaced had
+    /// received it (the planners do not send a path again for a new DriveControl).
+    fn connect_handing_over(&mut self, fresh: Option<ComponentKind>) -> crate::Result<()> {
         use crate::components::SetMapMessage;
         use crate::interfaces::{ControlPoints, GlobalPathCourse, GridPath, PlanningFailure};
         use crate::map::MapUpdate;
@@ -533,6 +540,11 @@ impl Wiring {
             ($from:ident . $out:literal => $to:ident . $inp:literal : $t:ty) => {{
                 let port = self.in_port::<$t>(K::$to, $inp)?;
                 let out = self.out_port::<$t>(K::$from, $out)?;
+                if fresh == Some(K::$to)
+                    && let Some(last) = out.last()
+                {
+                    port.put(last.clone());
+                }
                 links.connect(Peer::Rtc(K::$from), out, Peer::Rtc(K::$to), &port);
             }};
         }
@@ -568,16 +580,17 @@ impl Wiring {
         Ok(())
     }
 
-    /// Connects everything again after a component was put in another's place: every
-    /// out-port's connections dropped, then made afresh, each keeping its count and cut.
-    pub(super) fn reconnect(&mut self) -> crate::Result<()> {
+    /// Connects everything again after `fresh` was put in another's place: every out-port's
+    /// connections dropped, then made afresh, each keeping its count and cut; `fresh`'s
+    /// in-ports get the newest samples the replaced component had been sent.
+    pub(super) fn reconnect(&mut self, fresh: ComponentKind) -> crate::Result<()> {
         for kind in ComponentKind::ALL {
             if let Ok(c) = self.ec.component_dyn_mut(kind.index()) {
                 c.disconnect_ports();
             }
         }
         let old = core::mem::take(&mut self.links);
-        self.connect()?;
+        self.connect_handing_over(Some(fresh))?;
         self.links.copy_state_from(&old);
         Ok(())
     }

@@ -15,6 +15,10 @@ use crate::script::Program;
 use crate::system::vocabulary::events::EventKind;
 use crate::system::vocabulary::input::Input;
 
+/// How long a script in DriveControl's place commands nothing before it counts as done
+/// with its path \[ns\].
+pub const STANDING_NS: u64 = 500_000_000;
+
 /// `SetPDGain`'s parameters, in its order (002 §3.2.2.1 (1)).
 const GAINS: [&str; 4] = ["PGainL", "PGainR", "DGainL", "DGainR"];
 use crate::system::vocabulary::kind::ComponentKind;
@@ -98,6 +102,15 @@ impl Wiring {
                 .and_then(|l| l.points().last().copied());
         }
         self.script(ComponentKind::DriveControl)?.path_end()
+    }
+
+    /// Whether a script in DriveControl's place is done with its path: it has commanded
+    /// nothing for [`STANDING_NS`] (a script has no phase; a moment of zero, as at the start
+    /// or on a turn, is not the end of a path). `false` for the built-in (it has a phase).
+    pub fn drive_stands(&self) -> bool {
+        self.script(ComponentKind::DriveControl)
+            .and_then(ScriptComponent::standing_since)
+            .is_some_and(|t| self.ec.time_ns().saturating_sub(t) >= STANDING_NS)
     }
 
     /// The built-in DriveControl's phase (`None` while a script is in its place: a script has
@@ -224,10 +237,10 @@ impl Wiring {
         component: Box<dyn Component>,
     ) -> crate::Result<()> {
         let old = self.ec.replace(kind.index(), component)?;
-        if let Err(e) = self.reconnect() {
+        if let Err(e) = self.reconnect(kind) {
             // The new component lacks a port the table names: the old one goes back.
             let _ = self.ec.replace(kind.index(), old);
-            let _ = self.reconnect();
+            let _ = self.reconnect(kind);
             return Err(e);
         }
         self.drain_lifecycle_events();
