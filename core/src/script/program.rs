@@ -11,6 +11,7 @@ use rhai::{AST, CallFnOptions, Dynamic, Engine, EvalAltResult, ImmutableString, 
 use super::engine::{self, CALL_DEPTH, OPERATIONS};
 use super::error::ScriptError;
 use super::io::{self, Rtc};
+use crate::present::excerpt_of;
 
 /// The actions of seed 003's table, as a script names them (snake case).
 pub const ACTIONS: [&str; 12] = [
@@ -31,6 +32,10 @@ pub const ACTIONS: [&str; 12] = [
 /// The script's declaration of the component it stands in for:
 /// `const COMPONENT = "MotorControl";` at its top level.
 pub const DECLARATION: &str = "COMPONENT";
+
+/// The most characters of an error's words: a script's own text (a name, a thrown value)
+/// can be any size, and the error quotes it.
+pub const MESSAGE_CHARS: usize = 1_000;
 
 /// Lines one action may `print` (the rest are dropped, and the console says so).
 const PRINTS_PER_ACTION: usize = 100;
@@ -117,7 +122,7 @@ impl Program {
             ScriptError::Syntax {
                 line,
                 column,
-                message,
+                message: excerpt_of(&message, MESSAGE_CHARS),
             }
         })?;
         let mut actions = BTreeMap::new();
@@ -299,7 +304,7 @@ fn convert(action: &str, error: EvalAltResult) -> ScriptError {
         action: action.clone(),
         line,
         column,
-        message: format!("{message}{within}"),
+        message: excerpt_of(&format!("{message}{within}"), MESSAGE_CHARS),
     };
     let message = match &error {
         E::ErrorTooManyOperations(_) => {
@@ -367,6 +372,6 @@ fn convert(action: &str, error: EvalAltResult) -> ScriptError {
         action,
         line,
         column,
-        message: format!("{message}{within}"),
+        message: excerpt_of(&format!("{message}{within}"), MESSAGE_CHARS),
     }
 }
