@@ -309,7 +309,8 @@ pub fn check_scenario(
     Ok(found)
 }
 
-#[cfg(all(test, not(target_arch = "wasm32")))]
+#[cfg(test)]
+#[cfg(not(target_arch = "wasm32"))]
 mod tests {
     use super::*;
     use crate::system::DirResolver;
